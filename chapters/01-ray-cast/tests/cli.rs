@@ -1,0 +1,137 @@
+//! The program as a learner runs it: what it writes, and how it refuses bad input.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn run(args: &[&str], dir: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_ch01-ray-cast"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("the chapter program runs")
+}
+
+fn files_in(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = walk(dir)
+        .into_iter()
+        .map(|p| p.strip_prefix(dir).unwrap().display().to_string())
+        .collect();
+    names.sort();
+    names
+}
+
+fn walk(dir: &Path) -> Vec<std::path::PathBuf> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .flat_map(|e| {
+            let path = e.unwrap().path();
+            if path.is_dir() {
+                walk(&path)
+            } else {
+                vec![path]
+            }
+        })
+        .collect()
+}
+
+#[test]
+fn by_default_it_writes_render_png_into_out_and_says_so() {
+    let dir = tempfile::tempdir().unwrap();
+    let output = run(&["--width", "40", "--height", "30"], dir.path());
+    assert!(output.status.success(), "{output:?}");
+    let stdout = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        stdout.contains("40×30, 1 spp, max depth 1: 1,200 rays"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("Mrays/s"), "{stdout}");
+    assert!(
+        stdout.contains("wrote out/ch01-ray-cast/render.png"),
+        "{stdout}"
+    );
+    assert_eq!(files_in(dir.path()), ["out/ch01-ray-cast/render.png"]);
+    let image = image_size(&dir.path().join("out/ch01-ray-cast/render.png"));
+    assert_eq!(image, (40, 30));
+}
+
+fn image_size(path: &Path) -> (u32, u32) {
+    // The PNG header holds the size at bytes 16..24.
+    let bytes = std::fs::read(path).unwrap();
+    assert_eq!(&bytes[1..4], b"PNG");
+    let word = |at: usize| u32::from_be_bytes(bytes[at..at + 4].try_into().unwrap());
+    (word(16), word(20))
+}
+
+#[test]
+fn quiet_prints_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let output = run(&["--width", "8", "--height", "8", "--quiet"], dir.path());
+    assert!(output.status.success());
+    assert!(output.stdout.is_empty() && output.stderr.is_empty());
+}
+
+/// Each bad input: exit code 2, one line on stderr naming the flag or path,
+/// no panic, and no file written.
+#[test]
+fn bad_input_gets_one_clear_line_and_exit_code_2() {
+    let cases: &[(&[&str], &str)] = &[
+        (&["--width", "0"], "--width"),
+        (&["--height", "0"], "--height"),
+        (&["--width", "16385"], "1..=16384"),
+        (&["--width", "-3"], "--width"),
+        (&["--width", "lots"], "--width"),
+        (
+            &["--width", "16384", "--height", "16384"],
+            "make the image smaller",
+        ),
+        (&["--max-depth", "0"], "--max-depth"),
+        (&["--max-depth", "65"], "1..=64"),
+        (
+            &["--spp", "3"],
+            "1 (the pixel centre) or 5 (the lab's five rays)",
+        ),
+        (&["--spp", "0"], "--spp"),
+        (&["--epsilon", "NaN"], "--epsilon"),
+        (&["--epsilon", "-1"], "from 0 to 0.1"),
+        (
+            &["--out", "a-file/inside"],
+            "cannot use output folder 'a-file/inside'",
+        ),
+        (&["--widht", "3"], "--width"),
+    ];
+    for (args, expected) in cases {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(dir.path().join("a-file"), "not a folder").unwrap();
+        let output = run(args, dir.path());
+        let stderr = String::from_utf8(output.stderr).unwrap();
+        assert_eq!(output.status.code(), Some(2), "{args:?}: {stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+        assert!(
+            stderr.starts_with("ch01-ray-cast: error: "),
+            "{args:?}: {stderr}"
+        );
+        assert!(stderr.contains(expected), "{args:?}: {stderr}");
+        assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
+        assert_eq!(files_in(dir.path()), ["a-file"], "{args:?} wrote a file");
+    }
+}
+
+#[test]
+fn help_names_every_flag_with_the_chapters_defaults() {
+    let dir = tempfile::tempdir().unwrap();
+    let output = run(&["--help"], dir.path());
+    assert!(output.status.success());
+    let help = String::from_utf8(output.stdout).unwrap();
+    for flag in [
+        "--width",
+        "--height",
+        "--max-depth",
+        "--spp",
+        "--epsilon",
+        "--out",
+        "--quiet",
+    ] {
+        assert!(help.contains(flag), "{flag} missing from --help");
+    }
+    assert!(help.contains("[default: out/ch01-ray-cast]"), "{help}");
+}

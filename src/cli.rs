@@ -1,0 +1,270 @@
+//! The command line every chapter binary shares.
+
+use std::ffi::OsString;
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use clap::{CommandFactory, FromArgMatches, Parser};
+use indicatif::{ProgressBar, ProgressStyle};
+
+use crate::camera::Camera;
+use crate::output::{WriteError, save_png};
+use crate::render::{Rendered, Settings, render};
+use crate::sampling::SamplePattern;
+use crate::scene::Scene;
+use crate::stack::MAX_DEPTH_LIMIT;
+use crate::trace::Step;
+
+/// One step of the workbook: its program's name, its defaults, its step.
+pub struct Chapter<S: Step> {
+    /// The binary's name, e.g. `ch01-ray-cast`; also the default output folder.
+    pub binary: &'static str,
+    /// One line for `--help`.
+    pub about: &'static str,
+    /// The default `--max-depth` (LAB.md's chapter table).
+    pub max_depth: u32,
+    /// The default `--spp`.
+    pub spp: u32,
+    pub step: S,
+}
+
+/// The largest image side accepted.
+pub const MAX_SIDE: u32 = 16_384;
+/// The most pixels accepted in all: 64 Mi (8192 × 8192).
+pub const MAX_PIXELS: u64 = 64 * 1024 * 1024;
+
+/// Render one step of the lab scene to a PNG.
+#[derive(Parser, Debug, Clone, PartialEq)]
+#[command(version)]
+pub struct Options {
+    /// Image width in pixels
+    #[arg(long, value_name = "PIXELS", default_value_t = 800, allow_negative_numbers = true,
+          value_parser = clap::value_parser!(u32).range(1..=MAX_SIDE as i64))]
+    pub width: u32,
+
+    /// Image height in pixels
+    #[arg(long, value_name = "PIXELS", default_value_t = 600, allow_negative_numbers = true,
+          value_parser = clap::value_parser!(u32).range(1..=MAX_SIDE as i64))]
+    pub height: u32,
+
+    /// The deepest ray traced: 1 traces only the rays from the eye
+    #[arg(long, value_name = "N", allow_negative_numbers = true,
+          value_parser = clap::value_parser!(u32).range(1..=MAX_DEPTH_LIMIT as i64))]
+    pub max_depth: u32,
+
+    /// Rays per pixel: 1 (the pixel centre) or 5 (the lab's five rays)
+    #[arg(long, value_name = "N", value_parser = parse_spp, allow_negative_numbers = true)]
+    pub spp: u32,
+
+    /// How far shadow and secondary rays start from their surface (try 0 for shadow acne)
+    #[arg(long, value_name = "DISTANCE", default_value_t = 1e-4, value_parser = parse_epsilon,
+          allow_negative_numbers = true)]
+    pub epsilon: f32,
+
+    /// Folder to write into [default: out/<program name>] (set per chapter)
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+
+    /// Print nothing but errors: no progress bar, no summary
+    #[arg(long, short)]
+    pub quiet: bool,
+}
+
+fn parse_spp(text: &str) -> Result<u32, String> {
+    let allowed = || {
+        let counts: Vec<String> = SamplePattern::ALL
+            .iter()
+            .map(|p| format!("{} ({})", p.len(), p.name()))
+            .collect();
+        counts.join(" or ")
+    };
+    match text.parse::<u32>() {
+        Ok(n) if SamplePattern::with_samples(n).is_some() => Ok(n),
+        _ => Err(format!("rays per pixel must be {}", allowed())),
+    }
+}
+
+fn parse_epsilon(text: &str) -> Result<f32, String> {
+    match text.parse::<f32>() {
+        Ok(e) if e.is_finite() && (0.0..=0.1).contains(&e) => Ok(e),
+        _ => Err("the offset must be a number from 0 to 0.1 (scene units)".into()),
+    }
+}
+
+/// Why a chapter could not render; each is one line for the learner.
+#[derive(Debug, thiserror::Error)]
+pub enum CliError {
+    #[error("{0}")]
+    Usage(String),
+    #[error(
+        "--width {width} × --height {height} is {pixels} pixels, more than the {MAX_PIXELS} \
+         (8192 × 8192) allowed: make the image smaller"
+    )]
+    TooManyPixels {
+        width: u32,
+        height: u32,
+        pixels: u64,
+    },
+    #[error("cannot use output folder '{}': {source}; choose another with --out", path.display())]
+    OutputFolder {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    #[error("{0}; choose another folder with --out")]
+    Write(#[from] WriteError),
+}
+
+impl Options {
+    /// The options of a chapter's program, parsed from `args` (the first
+    /// one is the program's name), with that chapter's defaults.
+    pub fn parse_for<S: Step>(
+        chapter: &Chapter<S>,
+        args: impl IntoIterator<Item = impl Into<OsString> + Clone>,
+    ) -> Result<Self, clap::Error> {
+        let command = Options::command()
+            .name(chapter.binary)
+            .bin_name(chapter.binary)
+            .about(chapter.about)
+            .mut_arg("max_depth", |a| {
+                a.default_value(chapter.max_depth.to_string())
+                    .required(false)
+            })
+            .mut_arg("spp", |a| {
+                a.default_value(chapter.spp.to_string()).required(false)
+            })
+            .mut_arg("out", |a| {
+                a.help(format!(
+                    "Folder to write into [default: out/{}]",
+                    chapter.binary
+                ))
+            });
+        Options::from_arg_matches(&command.try_get_matches_from(args)?)
+    }
+
+    /// A chapter's options when no flag is given.
+    pub fn defaults<S: Step>(chapter: &Chapter<S>) -> Self {
+        Options::parse_for(chapter, [chapter.binary]).expect("the defaults parse")
+    }
+
+    /// The folder the chapter writes into.
+    pub fn out_dir<S: Step>(&self, chapter: &Chapter<S>) -> PathBuf {
+        self.out
+            .clone()
+            .unwrap_or_else(|| Path::new("out").join(chapter.binary))
+    }
+
+    /// The render settings these options ask for, once checked together.
+    pub fn settings(&self) -> Result<Settings, CliError> {
+        let pixels = u64::from(self.width) * u64::from(self.height);
+        if pixels > MAX_PIXELS {
+            return Err(CliError::TooManyPixels {
+                width: self.width,
+                height: self.height,
+                pixels,
+            });
+        }
+        Ok(Settings {
+            width: self.width,
+            height: self.height,
+            max_depth: self.max_depth,
+            epsilon: self.epsilon,
+            pattern: SamplePattern::with_samples(self.spp).expect("checked when parsed"),
+        })
+    }
+}
+
+/// What a chapter run made.
+#[derive(Debug)]
+pub struct Report {
+    pub rendered: Rendered,
+    pub render_png: PathBuf,
+}
+
+/// Make sure `dir` exists and takes new files, before any work is done.
+pub fn prepare_out_dir(dir: &Path) -> Result<(), CliError> {
+    let fail = |source| CliError::OutputFolder {
+        path: dir.to_owned(),
+        source,
+    };
+    std::fs::create_dir_all(dir).map_err(fail)?;
+    tempfile::tempfile_in(dir).map_err(fail)?;
+    Ok(())
+}
+
+/// A progress bar on a terminal; nothing when quiet or redirected.
+pub fn progress_bar(rows: u64, quiet: bool) -> ProgressBar {
+    if quiet || !std::io::stderr().is_terminal() {
+        return ProgressBar::hidden();
+    }
+    let bar = ProgressBar::new(rows);
+    bar.set_style(
+        ProgressStyle::with_template("{spinner} rendering [{bar:40}] {pos}/{len} rows {elapsed}")
+            .expect("a valid template")
+            .progress_chars("=> "),
+    );
+    bar
+}
+
+/// Render a chapter with these options and write `render.png`.
+pub fn run<S: Step>(chapter: &Chapter<S>, options: &Options) -> Result<Report, CliError> {
+    let settings = options.settings()?;
+    let out_dir = options.out_dir(chapter);
+    prepare_out_dir(&out_dir)?;
+
+    let scene = Scene::lab();
+    let camera = Camera::lab();
+    let progress = progress_bar(u64::from(settings.height), options.quiet);
+    let rendered = render(&scene, &camera, &chapter.step, &settings, &progress);
+    progress.finish_and_clear();
+
+    let render_png = out_dir.join("render.png");
+    save_png(&rendered.image.to_srgb8(), &render_png)?;
+    Ok(Report {
+        rendered,
+        render_png,
+    })
+}
+
+/// Turn a clap error into the one line the learner sees.
+fn usage_line(error: &clap::Error) -> String {
+    let text = error.render().to_string();
+    let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
+    let first = lines.next().unwrap_or("invalid arguments");
+    let first = first.strip_prefix("error: ").unwrap_or(first);
+    match lines.find(|l| l.starts_with("tip:")) {
+        Some(tip) => format!("{first} ({tip})"),
+        None => format!("{first} (see --help)"),
+    }
+}
+
+/// A chapter program's whole `main`: parse, render, write, report.
+/// Bad input gives one line on stderr and exit code 2.
+pub fn main<S: Step>(chapter: &Chapter<S>) -> ExitCode {
+    let result = Options::parse_for(chapter, std::env::args_os())
+        .map_err(|e| match e.kind() {
+            clap::error::ErrorKind::DisplayHelp | clap::error::ErrorKind::DisplayVersion => {
+                let _ = e.print();
+                None
+            }
+            _ => Some(CliError::Usage(usage_line(&e))),
+        })
+        .and_then(|options| {
+            let report = run(chapter, &options).map_err(Some)?;
+            Ok((options, report))
+        });
+    match result {
+        Ok((options, report)) => {
+            if !options.quiet {
+                println!("{}: {}", chapter.binary, report.rendered);
+                println!("wrote {}", report.render_png.display());
+            }
+            ExitCode::SUCCESS
+        }
+        Err(None) => ExitCode::SUCCESS,
+        Err(Some(error)) => {
+            eprintln!("{}: error: {error}", chapter.binary);
+            ExitCode::from(2)
+        }
+    }
+}

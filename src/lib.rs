@@ -1,0 +1,37 @@
+//! # raylab: the skeleton of a Whitted-style ray tracer
+//!
+//! Everything the workbook's steps share: vectors (glam), rays, the lab's
+//! shapes and scene, the pinhole camera, the ray stack and its tracing
+//! loop, sampling, image encoding, and the command line. A chapter crate
+//! supplies one thing, a [`Step`]: what happens when a ray hits a surface.
+//!
+//! `../shared/LAB.md` in the workbook defines every formula used here.
+
+pub mod camera;
+pub mod cli;
+pub mod light;
+pub mod linear_image;
+pub mod material;
+pub mod optics;
+pub mod output;
+pub mod plane;
+pub mod ray;
+pub mod render;
+pub mod sampling;
+pub mod scene;
+pub mod sphere;
+pub mod srgb;
+pub mod stack;
+pub mod trace;
+
+pub use glam::Vec3;
+pub use indicatif;
+
+pub use camera::Camera;
+pub use cli::Chapter;
+pub use material::Material;
+pub use ray::{Ray, RayKind};
+pub use render::{Rendered, Settings, render};
+pub use sampling::SamplePattern;
+pub use scene::{Hit, Object, Scene};
+pub use trace::{Step, Surface, Tracer};

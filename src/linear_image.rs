@@ -1,0 +1,82 @@
+//! The image as the renderer makes it: linear light, one `Vec3` a pixel.
+
+use glam::Vec3;
+use image::RgbImage;
+
+use crate::srgb::encode_channel;
+
+/// A `width` × `height` grid of linear RGB colours, row 0 at the top.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LinearImage {
+    width: u32,
+    height: u32,
+    pixels: Vec<Vec3>,
+}
+
+impl LinearImage {
+    /// A black image.
+    pub fn new(width: u32, height: u32) -> Self {
+        LinearImage {
+            width,
+            height,
+            pixels: vec![Vec3::ZERO; width as usize * height as usize],
+        }
+    }
+
+    /// An image from its pixels, row by row from the top.
+    ///
+    /// # Panics
+    /// If there are not `width · height` pixels.
+    pub fn from_pixels(width: u32, height: u32, pixels: Vec<Vec3>) -> Self {
+        assert_eq!(pixels.len(), width as usize * height as usize);
+        LinearImage {
+            width,
+            height,
+            pixels,
+        }
+    }
+
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    pub fn pixels(&self) -> &[Vec3] {
+        &self.pixels
+    }
+
+    pub fn pixel(&self, x: u32, y: u32) -> Vec3 {
+        self.pixels[(y * self.width + x) as usize]
+    }
+
+    /// Whether every channel of every pixel is a finite number.
+    pub fn is_finite(&self) -> bool {
+        self.pixels.iter().all(|p| p.is_finite())
+    }
+
+    /// Encode for display: clamp, sRGB, round to 8 bits (LAB.md).
+    pub fn to_srgb8(&self) -> RgbImage {
+        let bytes = self
+            .pixels
+            .iter()
+            .flat_map(|p| p.to_array().map(encode_channel))
+            .collect();
+        RgbImage::from_raw(self.width, self.height, bytes).expect("3 bytes per pixel")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn encoding_keeps_rows_and_channels_in_place() {
+        let image = LinearImage::from_pixels(2, 1, vec![Vec3::new(1.0, 0.0, 0.5), Vec3::ONE]);
+        let rgb = image.to_srgb8();
+        assert_eq!(rgb.get_pixel(0, 0).0, [255, 0, 188]);
+        assert_eq!(rgb.get_pixel(1, 0).0, [255, 255, 255]);
+    }
+}

@@ -1,0 +1,199 @@
+//! Rendering a whole image on every core, and what it cost.
+
+use std::fmt;
+use std::time::{Duration, Instant};
+
+use glam::Vec3;
+use indicatif::ProgressBar;
+use rayon::prelude::*;
+
+use crate::camera::Camera;
+use crate::linear_image::LinearImage;
+use crate::ray::RayKind;
+use crate::sampling::SamplePattern;
+use crate::scene::Scene;
+use crate::trace::{RayCounts, Step, Tracer};
+
+/// How to render: the image size and the limits of the ray tree.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    pub width: u32,
+    pub height: u32,
+    /// The deepest ray traced; 1 traces only the primary rays.
+    pub max_depth: u32,
+    /// How far secondary and shadow rays start from their surface.
+    pub epsilon: f32,
+    pub pattern: SamplePattern,
+}
+
+/// A rendered image, with what the renderer did to make it.
+#[derive(Clone, Debug)]
+pub struct Rendered {
+    pub settings: Settings,
+    pub image: LinearImage,
+    /// Per pixel: the depth of the deepest ray of its trees.
+    pub deepest: Vec<u8>,
+    /// Per pixel: every ray traced for it, shadow rays included.
+    pub rays: Vec<u32>,
+    pub counts: RayCounts,
+    pub elapsed: Duration,
+    /// Pixels whose colour came out NaN or infinite and were set to black.
+    /// Always 0 for a correct step; reported rather than hidden.
+    pub non_finite: usize,
+}
+
+#[derive(Clone, Copy, Default)]
+struct PixelResult {
+    colour: Vec3,
+    deepest: u8,
+    rays: u32,
+}
+
+// ANCHOR: pixel
+/// A pixel's colour: the plain average of its samples' colours, in linear
+/// light, summed in the pattern's order and divided by their number.
+fn render_pixel<S: Step + ?Sized>(
+    tracer: &mut Tracer<'_, S>,
+    camera: &Camera,
+    (i, j): (u32, u32),
+    settings: &Settings,
+) -> PixelResult {
+    let mut sum = Vec3::ZERO;
+    let mut result = PixelResult::default();
+    for &offset in settings.pattern.offsets() {
+        let ray = camera.ray(i, j, offset, settings.width, settings.height);
+        let traced = tracer.trace(ray);
+        sum += traced.colour;
+        result.deepest = result.deepest.max(traced.deepest as u8);
+        result.rays += traced.rays;
+    }
+    result.colour = sum / settings.pattern.len() as f32;
+    result
+}
+// ANCHOR_END: pixel
+
+/// Render `scene` through `camera` with a chapter's `step`, one image row
+/// per task on every core, ticking `progress` once per row.
+pub fn render<S: Step + ?Sized>(
+    scene: &Scene,
+    camera: &Camera,
+    step: &S,
+    settings: &Settings,
+    progress: &ProgressBar,
+) -> Rendered {
+    let (width, height) = (settings.width as usize, settings.height as usize);
+    let start = Instant::now();
+    let mut pixels = vec![PixelResult::default(); width * height];
+    let counts = pixels
+        .par_chunks_mut(width)
+        .enumerate()
+        // One tracer (and so one ray stack) per worker, made once and
+        // borrowed for every row that worker renders.
+        .map_init(
+            || Tracer::new(scene, step, settings.max_depth, settings.epsilon),
+            |tracer, (j, row)| {
+                let before = tracer.counts();
+                for (i, pixel) in row.iter_mut().enumerate() {
+                    *pixel = render_pixel(tracer, camera, (i as u32, j as u32), settings);
+                }
+                progress.inc(1);
+                tracer.counts() - before
+            },
+        )
+        .reduce(RayCounts::default, |a, b| a + b);
+    let elapsed = start.elapsed();
+
+    let mut non_finite = 0;
+    let colours = pixels
+        .iter()
+        .map(|p| {
+            if p.colour.is_finite() {
+                p.colour
+            } else {
+                non_finite += 1;
+                Vec3::ZERO
+            }
+        })
+        .collect();
+    Rendered {
+        settings: *settings,
+        image: LinearImage::from_pixels(settings.width, settings.height, colours),
+        deepest: pixels.iter().map(|p| p.deepest).collect(),
+        rays: pixels.iter().map(|p| p.rays).collect(),
+        counts,
+        elapsed,
+        non_finite,
+    }
+}
+
+impl Rendered {
+    /// Millions of rays traced per second of wall time.
+    pub fn mrays_per_second(&self) -> f64 {
+        self.counts.total() as f64 / self.elapsed.as_secs_f64().max(1e-9) / 1e6
+    }
+}
+
+/// The one-line summary: resolution, rays by kind, time and speed.
+impl fmt::Display for Rendered {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let s = &self.settings;
+        write!(
+            f,
+            "{}×{}, {} spp, max depth {}: {} rays (",
+            s.width,
+            s.height,
+            s.pattern.len(),
+            s.max_depth,
+            thousands(self.counts.total())
+        )?;
+        for (n, kind) in RayKind::ALL.into_iter().enumerate() {
+            let sep = if n == 0 { "" } else { ", " };
+            write!(
+                f,
+                "{sep}{} {}",
+                thousands(self.counts.get(kind)),
+                kind.name()
+            )?;
+        }
+        write!(
+            f,
+            ") in {:.1} ms, {:.1} Mrays/s",
+            self.elapsed.as_secs_f64() * 1e3,
+            self.mrays_per_second()
+        )?;
+        if self.non_finite > 0 {
+            write!(
+                f,
+                "; WARNING: {} pixels were NaN or infinite",
+                self.non_finite
+            )?;
+        }
+        Ok(())
+    }
+}
+
+/// `1234567` as `1,234,567`.
+pub fn thousands(n: u64) -> String {
+    let digits = n.to_string();
+    let mut out = String::with_capacity(digits.len() + digits.len() / 3);
+    for (i, c) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i).is_multiple_of(3) {
+            out.push(',');
+        }
+        out.push(c);
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn thousands_are_grouped_by_three() {
+        assert_eq!(thousands(0), "0");
+        assert_eq!(thousands(999), "999");
+        assert_eq!(thousands(1000), "1,000");
+        assert_eq!(thousands(12_345_678), "12,345,678");
+    }
+}

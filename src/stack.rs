@@ -1,0 +1,111 @@
+//! The ray stack: the rays still to be traced for one pixel.
+//!
+//! A fragment shader cannot recurse, so the lab kept its own stack; so does
+//! this tracer, for another reason: a fixed-size array on the thread's own
+//! stack costs no heap allocation per ray or per pixel.
+
+use crate::ray::{Ray, RayKind};
+
+/// The deepest `--max-depth` a render accepts.
+pub const MAX_DEPTH_LIMIT: u32 = 64;
+
+/// The most rays a single hit may send on (a chapter uses at most two:
+/// the reflected and the transmitted one).
+pub const MAX_SECONDARIES: usize = 4;
+
+/// Depth-first, each pop makes room for the children it pushes; the stack
+/// never holds more than one ray plus the waiting siblings of every level.
+pub const STACK_CAPACITY: usize = MAX_DEPTH_LIMIT as usize * (MAX_SECONDARIES - 1) + 1;
+
+/// A ray waiting on the stack, with what the ray stack of LAB.md carries.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PendingRay {
+    pub ray: Ray,
+    pub kind: RayKind,
+    /// The share of this ray's light that reaches the pixel.
+    pub weight: f32,
+    /// 1 for the primary ray, one more for every bounce.
+    pub depth: u32,
+    /// Where the ray's parent stands in a probe's ray log, if one is kept.
+    pub parent: Option<u32>,
+}
+
+/// A last-in, first-out stack of fixed capacity.
+pub struct RayStack {
+    rays: [PendingRay; STACK_CAPACITY],
+    len: usize,
+}
+
+impl Default for RayStack {
+    fn default() -> Self {
+        let empty = PendingRay {
+            ray: Ray {
+                origin: glam::Vec3::ZERO,
+                direction: glam::Vec3::Z,
+            },
+            kind: RayKind::Primary,
+            weight: 0.0,
+            depth: 0,
+            parent: None,
+        };
+        RayStack {
+            rays: [empty; STACK_CAPACITY],
+            len: 0,
+        }
+    }
+}
+
+impl RayStack {
+    /// Put a ray on top of the stack.
+    ///
+    /// # Panics
+    /// When the stack is full, which the depth limit makes impossible for
+    /// a step that sends at most [`MAX_SECONDARIES`] rays on per hit.
+    pub fn push(&mut self, ray: PendingRay) {
+        assert!(self.len < STACK_CAPACITY, "the ray stack overflowed");
+        self.rays[self.len] = ray;
+        self.len += 1;
+    }
+
+    /// Take the ray on top of the stack.
+    pub fn pop(&mut self) -> Option<PendingRay> {
+        self.len = self.len.checked_sub(1)?;
+        Some(self.rays[self.len])
+    }
+
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::Vec3;
+
+    fn pending(depth: u32) -> PendingRay {
+        PendingRay {
+            ray: Ray::new(Vec3::ZERO, Vec3::X),
+            kind: RayKind::Reflection,
+            weight: 1.0,
+            depth,
+            parent: None,
+        }
+    }
+
+    #[test]
+    fn the_last_ray_pushed_is_the_first_popped() {
+        let mut stack = RayStack::default();
+        stack.push(pending(1));
+        stack.push(pending(2));
+        assert_eq!(stack.len(), 2);
+        assert_eq!(stack.pop().unwrap().depth, 2);
+        assert_eq!(stack.pop().unwrap().depth, 1);
+        assert!(stack.pop().is_none());
+        assert!(stack.is_empty());
+    }
+}

@@ -1,0 +1,470 @@
+//! The tracer: the ray-stack loop of LAB.md, and the seam where a chapter
+//! plugs in what happens when a ray hits something.
+
+use glam::Vec3;
+
+use crate::ray::{Ray, RayKind};
+use crate::scene::{Hit, Object, Scene};
+use crate::stack::{MAX_DEPTH_LIMIT, MAX_SECONDARIES, PendingRay, RayStack};
+
+// ANCHOR: step
+/// What a chapter adds: how a surface that a ray has hit is shaded.
+///
+/// `shade` returns the surface's *local* light — what it sends towards the
+/// ray's origin by itself, from the sun and the ambient term. Along the way
+/// it may ask `surface` whether a shadow ray is blocked, and hand it rays to
+/// send on (reflected, refracted) with the share of the light each carries.
+/// The tracer does the rest: it weights the local light by the share that
+/// is left, and pushes the rays sent on while the depth allows.
+pub trait Step: Sync {
+    fn shade(&self, ray: &Ray, hit: &Hit, surface: &mut Surface) -> Vec3;
+}
+// ANCHOR_END: step
+
+/// A ray a step sends on from a surface, and its share of the light.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Secondary {
+    pub kind: RayKind,
+    pub ray: Ray,
+    pub share: f32,
+}
+
+/// The most shadow rays a probe records per hit.
+const MAX_LOGGED_SHADOWS: usize = 4;
+
+/// What a step can do at a hit: look at the scene, cast shadow rays, and
+/// send rays on. One `Surface` is reused for every hit.
+pub struct Surface<'s> {
+    scene: &'s Scene,
+    epsilon: f32,
+    sent: [Option<Secondary>; MAX_SECONDARIES],
+    sent_len: usize,
+    kept: f32,
+    shadow_rays: u32,
+    /// Shadow rays and whether they were blocked, kept only for a probe.
+    logged_shadows: Option<([(Ray, bool); MAX_LOGGED_SHADOWS], usize)>,
+}
+
+impl<'s> Surface<'s> {
+    fn new(scene: &'s Scene, epsilon: f32, log: bool) -> Self {
+        let none = (Ray::new(Vec3::ZERO, Vec3::Z), false);
+        Surface {
+            scene,
+            epsilon,
+            sent: [None; MAX_SECONDARIES],
+            sent_len: 0,
+            kept: 1.0,
+            shadow_rays: 0,
+            logged_shadows: log.then_some(([none; MAX_LOGGED_SHADOWS], 0)),
+        }
+    }
+
+    fn reset(&mut self) {
+        self.sent_len = 0;
+        self.kept = 1.0;
+        self.shadow_rays = 0;
+        if let Some((_, len)) = &mut self.logged_shadows {
+            *len = 0;
+        }
+    }
+
+    /// The scene being rendered (for the sun, say).
+    pub fn scene(&self) -> &'s Scene {
+        self.scene
+    }
+
+    /// How far a new ray starts from the surface it leaves, so that it
+    /// does not hit that same surface again through rounding (`--epsilon`).
+    pub fn epsilon(&self) -> f32 {
+        self.epsilon
+    }
+
+    /// Trace a shadow ray: `true` if anything at all lies in its way.
+    pub fn trace_shadow_ray(&mut self, ray: Ray) -> bool {
+        self.shadow_rays += 1;
+        let blocked = self.scene.any_hit(&ray);
+        if let Some((log, len)) = &mut self.logged_shadows
+            && *len < MAX_LOGGED_SHADOWS
+        {
+            log[*len] = (ray, blocked);
+            *len += 1;
+        }
+        blocked
+    }
+
+    /// Send `share` of the light arriving here on along `ray`.
+    ///
+    /// The share is taken from the local light at once, even if the ray is
+    /// too deep to be traced: at the maximum depth that light is lost,
+    /// which is what a depth limit means.
+    ///
+    /// # Panics
+    /// If a step sends on more than [`MAX_SECONDARIES`] rays from one hit.
+    pub fn send(&mut self, kind: RayKind, ray: Ray, share: f32) {
+        assert!(
+            self.sent_len < MAX_SECONDARIES,
+            "a step may send at most {MAX_SECONDARIES} rays on from one hit"
+        );
+        self.sent[self.sent_len] = Some(Secondary { kind, ray, share });
+        self.sent_len += 1;
+        // Subtracted one share at a time, as LAB.md writes `1 - r - t`.
+        self.kept -= share;
+    }
+
+    /// The share of the light left for local shading: `1 − r − t`.
+    pub fn kept(&self) -> f32 {
+        self.kept
+    }
+
+    /// The rays sent on so far, in the order they were sent.
+    pub fn sent(&self) -> impl Iterator<Item = Secondary> + '_ {
+        self.sent[..self.sent_len].iter().flatten().copied()
+    }
+}
+
+/// One traced ray, as a probe records it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TracedRay {
+    pub kind: RayKind,
+    pub depth: u32,
+    pub weight: f32,
+    pub ray: Ray,
+    /// What it hit and at which distance; `None` for the sky.
+    pub hit: Option<(Object, f32)>,
+    /// What it added to the pixel's colour (zero for shadow rays, whose
+    /// effect is in their parent's local light).
+    pub added: Vec3,
+    /// Index of the ray it came from in the same log.
+    pub parent: Option<usize>,
+}
+
+/// Counts of rays traced, by kind.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct RayCounts(pub [u64; RayKind::ALL.len()]);
+
+impl RayCounts {
+    pub fn get(&self, kind: RayKind) -> u64 {
+        self.0[kind.index()]
+    }
+
+    pub fn total(&self) -> u64 {
+        self.0.iter().sum()
+    }
+}
+
+impl std::ops::Add for RayCounts {
+    type Output = RayCounts;
+    fn add(mut self, other: RayCounts) -> RayCounts {
+        for (a, b) in self.0.iter_mut().zip(other.0) {
+            *a += b;
+        }
+        self
+    }
+}
+
+impl std::ops::Sub for RayCounts {
+    type Output = RayCounts;
+    fn sub(mut self, other: RayCounts) -> RayCounts {
+        for (a, b) in self.0.iter_mut().zip(other.0) {
+            *a -= b;
+        }
+        self
+    }
+}
+
+/// What tracing one primary ray gave.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Traced {
+    pub colour: Vec3,
+    /// The depth of the deepest ray traced (shadow rays do not count).
+    pub deepest: u32,
+    /// Every ray traced, shadow rays included.
+    pub rays: u32,
+}
+
+/// Traces rays through one scene with one step; one per thread.
+pub struct Tracer<'s, S: Step + ?Sized> {
+    scene: &'s Scene,
+    step: &'s S,
+    max_depth: u32,
+    stack: RayStack,
+    surface: Surface<'s>,
+    counts: RayCounts,
+    log: Option<Vec<TracedRay>>,
+    by_depth: Option<[Vec3; MAX_DEPTH_LIMIT as usize + 1]>,
+}
+
+impl<'s, S: Step + ?Sized> Tracer<'s, S> {
+    /// A tracer for rays up to `max_depth` deep (1 to [`MAX_DEPTH_LIMIT`]).
+    pub fn new(scene: &'s Scene, step: &'s S, max_depth: u32, epsilon: f32) -> Self {
+        assert!(
+            (1..=MAX_DEPTH_LIMIT).contains(&max_depth),
+            "max_depth must be 1 to {MAX_DEPTH_LIMIT}"
+        );
+        Tracer {
+            scene,
+            step,
+            max_depth,
+            stack: RayStack::default(),
+            surface: Surface::new(scene, epsilon, false),
+            counts: RayCounts::default(),
+            log: None,
+            by_depth: None,
+        }
+    }
+
+    /// Record every ray traced from now on, for a probe.
+    pub fn with_log(mut self) -> Self {
+        self.log = Some(Vec::new());
+        self.surface = Surface::new(self.scene, self.surface.epsilon, true);
+        self
+    }
+
+    /// Also keep the colour every smaller max depth would have given (see
+    /// [`Tracer::colour_at_depth`]).
+    pub fn with_depth_colours(mut self) -> Self {
+        self.by_depth = Some([Vec3::ZERO; MAX_DEPTH_LIMIT as usize + 1]);
+        self
+    }
+
+    pub fn max_depth(&self) -> u32 {
+        self.max_depth
+    }
+
+    /// The rays traced so far, by kind.
+    pub fn counts(&self) -> RayCounts {
+        self.counts
+    }
+
+    /// The rays a probe recorded, in the order they were traced.
+    pub fn log(&self) -> &[TracedRay] {
+        self.log.as_deref().unwrap_or_default()
+    }
+
+    /// After [`Tracer::trace`] on a tracer made `with_depth_colours`: the
+    /// colour the same ray would have had with `max_depth = depth`.
+    ///
+    /// A ray's own contribution does not depend on the depth limit, and
+    /// removing the deeper rays does not reorder the others, so these are
+    /// the same sums, added in the same order, as separate renders.
+    pub fn colour_at_depth(&self, depth: u32) -> Option<Vec3> {
+        let by_depth = self.by_depth.as_ref()?;
+        (1..=self.max_depth)
+            .contains(&depth)
+            .then(|| by_depth[depth as usize])
+    }
+
+    // ANCHOR: trace
+    /// The colour seen along a primary ray: LAB.md's ray-stack loop.
+    pub fn trace(&mut self, primary: Ray) -> Traced {
+        let mut traced = Traced::default();
+        if let Some(by_depth) = &mut self.by_depth {
+            by_depth.fill(Vec3::ZERO);
+        }
+        self.stack.push(PendingRay {
+            ray: primary,
+            kind: RayKind::Primary,
+            weight: 1.0,
+            depth: 1,
+            parent: None,
+        });
+        while let Some(pending) = self.stack.pop() {
+            self.counts.0[pending.kind.index()] += 1;
+            traced.rays += 1;
+            traced.deepest = traced.deepest.max(pending.depth);
+
+            let Some(hit) = self.scene.nearest_hit(&pending.ray) else {
+                // Nothing in the way: the ray sees the sky.
+                let sky = pending.weight * self.scene.sky.radiance(pending.ray.direction);
+                self.add(&mut traced, &pending, None, sky);
+                continue;
+            };
+
+            self.surface.reset();
+            let local = self.step.shade(&pending.ray, &hit, &mut self.surface);
+            let added = pending.weight * self.surface.kept() * local;
+            let me = self.add(&mut traced, &pending, Some(&hit), added);
+
+            self.counts.0[RayKind::Shadow.index()] += u64::from(self.surface.shadow_rays);
+            traced.rays += self.surface.shadow_rays;
+
+            if pending.depth < self.max_depth {
+                for secondary in self.surface.sent() {
+                    self.stack.push(PendingRay {
+                        ray: secondary.ray,
+                        kind: secondary.kind,
+                        weight: pending.weight * secondary.share,
+                        depth: pending.depth + 1,
+                        parent: me,
+                    });
+                }
+            }
+        }
+        traced
+    }
+    // ANCHOR_END: trace
+
+    /// Add a ray's contribution to the pixel, and to the probe's log and
+    /// the per-depth colours when those are kept. Returns the ray's index
+    /// in the log.
+    fn add(
+        &mut self,
+        traced: &mut Traced,
+        pending: &PendingRay,
+        hit: Option<&Hit>,
+        added: Vec3,
+    ) -> Option<u32> {
+        traced.colour += added;
+        if let Some(by_depth) = &mut self.by_depth {
+            for colour in &mut by_depth[pending.depth as usize..=self.max_depth as usize] {
+                *colour += added;
+            }
+        }
+        let log = self.log.as_mut()?;
+        let me = log.len();
+        log.push(TracedRay {
+            kind: pending.kind,
+            depth: pending.depth,
+            weight: pending.weight,
+            ray: pending.ray,
+            hit: hit.map(|h| (h.object, h.t)),
+            added,
+            parent: pending.parent.map(|p| p as usize),
+        });
+        if let (Some(_), Some((shadows, len))) = (hit, &self.surface.logged_shadows) {
+            for &(ray, _) in &shadows[..*len] {
+                let hit = self.scene.nearest_hit(&ray).map(|h| (h.object, h.t));
+                log.push(TracedRay {
+                    kind: RayKind::Shadow,
+                    depth: pending.depth,
+                    weight: pending.weight,
+                    ray,
+                    hit,
+                    added: Vec3::ZERO,
+                    parent: Some(me),
+                });
+            }
+        }
+        Some(me as u32)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::light::{Sky, Sun};
+    use crate::material::Material;
+    use crate::plane::{Checker, Plane};
+    use crate::scene::Ground;
+    use crate::sphere::Sphere;
+
+    /// Two perfect mirrors facing each other along the x axis, the ground
+    /// far below: a ray between them bounces for ever.
+    fn facing_mirrors() -> Scene {
+        let mut scene = Scene::new(
+            Ground {
+                plane: Plane {
+                    point: Vec3::new(0.0, -100.0, 0.0),
+                    normal: Vec3::Y,
+                },
+                checker: Checker {
+                    even: Vec3::ONE,
+                    odd: Vec3::ZERO,
+                },
+            },
+            Sky {
+                horizon: Vec3::ONE,
+                zenith: Vec3::ONE,
+            },
+            Sun {
+                direction: Vec3::Y,
+                brightness: 1.0,
+            },
+        )
+        .unwrap();
+        let mirror = Material::new(Vec3::splat(0.5), 1.0, 0.0, 1.0).unwrap();
+        for x in [-2.0, 2.0] {
+            let shape = Sphere {
+                centre: Vec3::new(x, 0.0, 0.0),
+                radius: 1.0,
+            };
+            scene.add_sphere("mirror", shape, mirror).unwrap();
+        }
+        scene
+    }
+
+    /// A step that mirrors all the light it is given and casts one shadow ray.
+    struct MirrorWithShadow;
+
+    impl Step for MirrorWithShadow {
+        fn shade(&self, ray: &Ray, hit: &Hit, surface: &mut Surface) -> Vec3 {
+            let sun = surface.scene().sun.direction;
+            surface.trace_shadow_ray(Ray::new(hit.point + sun * 1e-4, sun));
+            let r = crate::optics::reflect(ray.direction, hit.facing_normal).normalize();
+            let origin = hit.point + r * surface.epsilon();
+            surface.send(
+                RayKind::Reflection,
+                Ray::new(origin, r),
+                hit.material.reflection(),
+            );
+            hit.material.albedo()
+        }
+    }
+
+    #[test]
+    fn two_facing_mirrors_stop_after_max_depth_bounces() {
+        // Every ray hits a mirror, casts one shadow ray and sends one ray on:
+        // depth D traces D mirror rays (1 primary, D − 1 reflections) and D shadow rays.
+        let scene = facing_mirrors();
+        for max_depth in [1, 2, 10, 64] {
+            let mut tracer = Tracer::new(&scene, &MirrorWithShadow, max_depth, 1e-4);
+            let traced = tracer.trace(Ray::new(Vec3::ZERO, Vec3::X));
+            let counts = tracer.counts();
+            assert_eq!(counts.get(RayKind::Primary), 1);
+            assert_eq!(counts.get(RayKind::Reflection), u64::from(max_depth - 1));
+            assert_eq!(counts.get(RayKind::Shadow), u64::from(max_depth));
+            assert_eq!(traced.rays, 2 * max_depth);
+            assert_eq!(traced.deepest, max_depth);
+        }
+    }
+
+    #[test]
+    fn no_ray_is_deeper_than_max_depth() {
+        let scene = facing_mirrors();
+        let mut tracer = Tracer::new(&scene, &MirrorWithShadow, 5, 1e-4).with_log();
+        tracer.trace(Ray::new(Vec3::ZERO, Vec3::X));
+        let log = tracer.log();
+        assert_eq!(log.iter().map(|r| r.depth).max(), Some(5));
+        // Each mirror ray's parent is the one before it, one level up.
+        for ray in log.iter().filter(|r| r.kind == RayKind::Reflection) {
+            let parent = &log[ray.parent.unwrap()];
+            assert_eq!(parent.depth + 1, ray.depth);
+        }
+    }
+
+    #[test]
+    fn at_the_maximum_depth_the_mirrored_share_is_lost() {
+        // With r = 1 nothing is kept for local shading and, at depth 1,
+        // nothing is traced further: the pixel is black.
+        let scene = facing_mirrors();
+        let mut tracer = Tracer::new(&scene, &MirrorWithShadow, 1, 1e-4);
+        assert_eq!(
+            tracer.trace(Ray::new(Vec3::ZERO, Vec3::X)).colour,
+            Vec3::ZERO
+        );
+    }
+
+    #[test]
+    fn per_depth_colours_match_separate_renders() {
+        let scene = Scene::lab();
+        let glass = Vec3::new(1.0, 0.6, 0.8);
+        let eye = Vec3::new(0.0, 1.2, 4.5);
+        let ray = Ray::new(eye, (glass - eye).normalize());
+        let mut all = Tracer::new(&scene, &MirrorWithShadow, 6, 1e-4).with_depth_colours();
+        all.trace(ray);
+        for depth in 1..=6 {
+            let mut one = Tracer::new(&scene, &MirrorWithShadow, depth, 1e-4);
+            assert_eq!(all.colour_at_depth(depth), Some(one.trace(ray).colour));
+        }
+    }
+}

@@ -1,0 +1,38 @@
+//! Every chapter still renders its golden image (160 × 120, the chapter's
+//! defaults otherwise). Regenerate them, on purpose only, with
+//! `RAYLAB_BLESS=1 cargo test -p raylab-tests --test golden` and look at the result.
+
+use raylab::cli::{Chapter, Options};
+use raylab::indicatif::ProgressBar;
+use raylab::{Camera, Scene, Step, render};
+use raylab_tests::check_golden;
+
+fn render_small<S: Step>(chapter: &Chapter<S>) -> raylab::Rendered {
+    let options = Options::parse_for(
+        chapter,
+        [chapter.binary, "--width", "160", "--height", "120"],
+    )
+    .unwrap();
+    let settings = options.settings().unwrap();
+    let rendered = render(
+        &Scene::lab(),
+        &Camera::lab(),
+        &chapter.step,
+        &settings,
+        &ProgressBar::hidden(),
+    );
+    assert_eq!(rendered.non_finite, 0, "no pixel may be NaN or infinite");
+    assert!(rendered.image.is_finite());
+    rendered
+}
+
+#[test]
+fn chapter_1_renders_its_golden_image() {
+    let rendered = render_small(&ch01_ray_cast::CHAPTER);
+    assert_eq!(
+        rendered.counts.total(),
+        160 * 120,
+        "one primary ray per pixel"
+    );
+    check_golden("ch01-ray-cast", &rendered.image.to_srgb8());
+}

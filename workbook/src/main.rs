@@ -1,0 +1,29 @@
+//! The workbook's main job: run every chapter's program with its defaults,
+//! as a learner would, one after the other.
+//!
+//! `cargo run --release -p workbook`
+
+use std::process::ExitCode;
+
+use raylab::Step;
+use raylab::cli::{self, Chapter, Options};
+
+/// Render one chapter with its default options and print its summary.
+fn render_chapter<S: Step>(chapter: &Chapter<S>) -> Result<(), cli::CliError> {
+    let options = Options::defaults(chapter);
+    let report = cli::run(chapter, &options)?;
+    println!("{}: {}", chapter.binary, report.rendered);
+    println!("  wrote {}", report.render_png.display());
+    Ok(())
+}
+
+fn main() -> ExitCode {
+    let result = render_chapter(&ch01_ray_cast::CHAPTER);
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(error) => {
+            eprintln!("workbook: error: {error}");
+            ExitCode::from(2)
+        }
+    }
+}
