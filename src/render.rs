@@ -12,7 +12,7 @@ use crate::linear_image::LinearImage;
 use crate::ray::RayKind;
 use crate::sampling::SamplePattern;
 use crate::scene::Scene;
-use crate::trace::{RayCounts, Step, Tracer};
+use crate::trace::{RAY_BUDGET, RayCounts, Step, Tracer};
 
 /// How to render: the image size and the limits of the ray tree.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -40,6 +40,8 @@ pub struct Rendered {
     /// Pixels whose colour came out NaN or infinite and were set to black.
     /// Always 0 for a correct step; reported rather than hidden.
     pub non_finite: usize,
+    /// Samples whose ray tree reached [`RAY_BUDGET`] and was cut short.
+    pub over_budget: u64,
 }
 
 #[derive(Clone, Copy, Default)]
@@ -47,6 +49,7 @@ struct PixelResult {
     colour: Vec3,
     deepest: u8,
     rays: u32,
+    over_budget: u8,
 }
 
 // ANCHOR: pixel
@@ -66,6 +69,7 @@ fn render_pixel<S: Step + ?Sized>(
         sum += traced.colour;
         result.deepest = result.deepest.max(traced.deepest as u8);
         result.rays += traced.rays;
+        result.over_budget += u8::from(traced.over_budget);
     }
     result.colour = sum / settings.pattern.len() as f32;
     result
@@ -123,6 +127,7 @@ pub fn render<S: Step + ?Sized>(
         counts,
         elapsed,
         non_finite,
+        over_budget: pixels.iter().map(|p| u64::from(p.over_budget)).sum(),
     }
 }
 
@@ -161,6 +166,14 @@ impl fmt::Display for Rendered {
             self.elapsed.as_secs_f64() * 1e3,
             self.mrays_per_second()
         )?;
+        if self.over_budget > 0 {
+            write!(
+                f,
+                "; WARNING: {} samples reached the budget of {RAY_BUDGET} rays and were cut short \
+                 (is --epsilon 0?)",
+                thousands(self.over_budget)
+            )?;
+        }
         if self.non_finite > 0 {
             write!(
                 f,

@@ -172,6 +172,15 @@ impl std::ops::Sub for RayCounts {
     }
 }
 
+/// The most rays (shadow rays included) traced for one primary ray.
+///
+/// With the default `--epsilon` even `--max-depth 64` stays far below it.
+/// With `--epsilon 0` a ray can re-hit the surface it leaves and split in
+/// two there, again and again: the tree doubles every level or two, and at
+/// depth 64 it would never finish. Past the budget no new ray is sent on,
+/// and the render reports how many samples that cut short.
+pub const RAY_BUDGET: u32 = 4096;
+
 /// What tracing one primary ray gave.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Traced {
@@ -180,6 +189,8 @@ pub struct Traced {
     pub deepest: u32,
     /// Every ray traced, shadow rays included.
     pub rays: u32,
+    /// Whether the tree was cut short by [`RAY_BUDGET`].
+    pub over_budget: bool,
 }
 
 /// Traces rays through one scene with one step; one per thread.
@@ -288,7 +299,11 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
             self.counts.0[RayKind::Shadow.index()] += u64::from(self.surface.shadow_rays);
             traced.rays += self.surface.shadow_rays;
 
-            if pending.depth < self.max_depth {
+            if pending.depth < self.max_depth && self.surface.sent_len > 0 {
+                if traced.rays >= RAY_BUDGET {
+                    traced.over_budget = true;
+                    continue;
+                }
                 for secondary in self.surface.sent() {
                     self.stack.push(PendingRay {
                         ray: secondary.ray,
@@ -440,6 +455,35 @@ mod tests {
             let parent = &log[ray.parent.unwrap()];
             assert_eq!(parent.depth + 1, ray.depth);
         }
+    }
+
+    #[test]
+    fn a_tree_that_doubles_every_level_stops_at_the_ray_budget() {
+        // Two rays sent on from every hit between two mirrors: 2^64 rays
+        // at depth 64, were it not for the budget.
+        struct Splitting;
+        impl Step for Splitting {
+            fn shade(&self, ray: &Ray, hit: &Hit, surface: &mut Surface) -> Vec3 {
+                let r = crate::optics::reflect(ray.direction, hit.facing_normal).normalize();
+                let next = Ray::new(hit.point + r * 1e-4, r);
+                surface.send(RayKind::Reflection, next, 0.5);
+                surface.send(RayKind::Reflection, next, 0.5);
+                Vec3::ZERO
+            }
+        }
+        let scene = facing_mirrors();
+        let mut tracer = Tracer::new(&scene, &Splitting, 64, 1e-4);
+        let traced = tracer.trace(Ray::new(Vec3::ZERO, Vec3::X));
+        assert!(traced.over_budget);
+        assert!(
+            traced.rays >= RAY_BUDGET && traced.rays < 2 * RAY_BUDGET,
+            "{}",
+            traced.rays
+        );
+        // Within budget nothing is cut.
+        let mut shallow = Tracer::new(&scene, &Splitting, 8, 1e-4);
+        let traced = shallow.trace(Ray::new(Vec3::ZERO, Vec3::X));
+        assert_eq!((traced.rays, traced.over_budget), (255, false));
     }
 
     #[test]

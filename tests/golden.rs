@@ -36,3 +36,28 @@ fn chapter_1_renders_its_golden_image() {
     );
     check_golden("ch01-ray-cast", &rendered.image.to_srgb8());
 }
+
+#[test]
+fn chapter_2_renders_its_golden_image() {
+    let rendered = render_small(&ch02_shadows::CHAPTER);
+    check_golden("ch02-shadows", &rendered.image.to_srgb8());
+}
+
+#[test]
+fn chapter_3_renders_its_golden_image() {
+    let rendered = render_small(&ch03_reflection::CHAPTER);
+    check_golden("ch03-reflection", &rendered.image.to_srgb8());
+}
+
+#[test]
+fn chapter_4_renders_its_golden_image() {
+    let rendered = render_small(&ch04_refraction::CHAPTER);
+    check_golden("ch04-refraction", &rendered.image.to_srgb8());
+}
+
+#[test]
+fn chapter_5_renders_its_golden_image() {
+    let rendered = render_small(&ch05_antialiasing::CHAPTER);
+    assert_eq!(rendered.counts.get(raylab::RayKind::Primary), 5 * 160 * 120);
+    check_golden("ch05-antialiasing", &rendered.image.to_srgb8());
+}

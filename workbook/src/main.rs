@@ -18,7 +18,11 @@ fn render_chapter<S: Step>(chapter: &Chapter<S>) -> Result<(), cli::CliError> {
 }
 
 fn main() -> ExitCode {
-    let result = render_chapter(&ch01_ray_cast::CHAPTER);
+    let result = render_chapter(&ch01_ray_cast::CHAPTER)
+        .and_then(|()| render_chapter(&ch02_shadows::CHAPTER))
+        .and_then(|()| render_chapter(&ch03_reflection::CHAPTER))
+        .and_then(|()| render_chapter(&ch04_refraction::CHAPTER))
+        .and_then(|()| render_chapter(&ch05_antialiasing::CHAPTER));
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {

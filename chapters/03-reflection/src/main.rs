@@ -1,0 +1,4 @@
+//! `cargo run -p ch03-reflection -- --help`
+fn main() -> std::process::ExitCode {
+    raylab::cli::main(&ch03_reflection::CHAPTER)
+}
