@@ -15,6 +15,7 @@ pub mod material;
 pub mod optics;
 pub mod output;
 pub mod plane;
+pub mod plot;
 pub mod ray;
 pub mod render;
 pub mod sampling;

@@ -1,0 +1,109 @@
+//! Perceptually uniform colormaps: numbers in `[0, 1]` to colours.
+//!
+//! Viridis and magma are matplotlib's defaults for a reason: equal steps in
+//! the value look like equal steps in colour, they stay readable in
+//! greyscale and for common colour-vision deficiencies, and their lightness
+//! rises steadily so "brighter" always means "more". The 256-entry tables
+//! come from matplotlib (see `colormap_tables.rs` for source and licence).
+
+use super::colormap_tables::{MAGMA, VIRIDIS};
+use super::colour::Rgb;
+
+/// Which colormap a figure uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Colormap {
+    /// Dark purple through teal to yellow.
+    Viridis,
+    /// Black through purple and orange to pale yellow; good when "zero"
+    /// should look like nothing, as in difference images.
+    Magma,
+}
+
+impl Colormap {
+    /// The colour for `t`, clamped to `[0, 1]`; NaN gives the low end.
+    pub fn sample(self, t: f32) -> Rgb {
+        match self {
+            Colormap::Viridis => viridis(t),
+            Colormap::Magma => magma(t),
+        }
+    }
+}
+
+/// matplotlib's viridis at `t` in `[0, 1]` (clamped; NaN gives the low end).
+pub fn viridis(t: f32) -> Rgb {
+    sample_table(&VIRIDIS, t)
+}
+
+/// matplotlib's magma at `t` in `[0, 1]` (clamped; NaN gives the low end).
+pub fn magma(t: f32) -> Rgb {
+    sample_table(&MAGMA, t)
+}
+
+/// Reads a colour table at fraction `t`, blending linearly between the two
+/// nearest entries so that the result changes smoothly with `t`.
+fn sample_table(table: &[[u8; 3]; 256], t: f32) -> Rgb {
+    // `f32::clamp` keeps NaN as NaN, so test for it first.
+    let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };
+    let position = t * 255.0;
+    let below = (position.floor() as usize).min(254);
+    let fraction = position - below as f32;
+    let (a, b) = (table[below], table[below + 1]);
+    let channel = |i: usize| {
+        let value = f32::from(a[i]) + (f32::from(b[i]) - f32::from(a[i])) * fraction;
+        value.round() as u8
+    };
+    [channel(0), channel(1), channel(2)]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn viridis_endpoints_match_matplotlib() {
+        assert_eq!(viridis(0.0), [68, 1, 84]);
+        assert_eq!(viridis(1.0), [253, 231, 37]);
+        // Entry 128 of matplotlib's table: (0.127568, 0.566949, 0.550556) × 255.
+        assert_eq!(viridis(128.0 / 255.0), [33, 145, 140]);
+    }
+
+    #[test]
+    fn magma_endpoints_match_matplotlib() {
+        assert_eq!(magma(0.0), [0, 0, 4]);
+        assert_eq!(magma(1.0), [252, 253, 191]);
+    }
+
+    #[test]
+    fn out_of_range_is_clamped_and_nan_is_low() {
+        assert_eq!(viridis(-3.0), viridis(0.0));
+        assert_eq!(viridis(7.0), viridis(1.0));
+        assert_eq!(viridis(f32::NAN), viridis(0.0));
+        assert_eq!(magma(f32::NAN), magma(0.0));
+        assert_eq!(magma(f32::INFINITY), magma(1.0));
+        assert_eq!(magma(f32::NEG_INFINITY), magma(0.0));
+    }
+
+    #[test]
+    fn lightness_rises_monotonically() {
+        // Rough luma; both maps are designed so this never goes down.
+        let luma = |c: Rgb| 0.299 * c[0] as f32 + 0.587 * c[1] as f32 + 0.114 * c[2] as f32;
+        for map in [Colormap::Viridis, Colormap::Magma] {
+            let mut previous = -1.0;
+            for i in 0..=64 {
+                let l = luma(map.sample(i as f32 / 64.0));
+                assert!(l >= previous - 0.5, "{map:?} darkens at {i}/64");
+                previous = l;
+            }
+        }
+    }
+
+    #[test]
+    fn interpolates_between_entries() {
+        // Halfway between entries 0 and 1 lies between their colours.
+        let mid = viridis(0.5 / 255.0);
+        let (a, b) = (VIRIDIS[0], VIRIDIS[1]);
+        for i in 0..3 {
+            assert!(mid[i] >= a[i].min(b[i]) && mid[i] <= a[i].max(b[i]));
+        }
+    }
+}
