@@ -9,8 +9,11 @@ use clap::{CommandFactory, FromArgMatches, Parser};
 use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::camera::Camera;
-use crate::output::{WriteError, save_png};
-use crate::render::{Rendered, Settings, render};
+use crate::diagrams::sweep::DepthSweep;
+use crate::diagrams::{heatmaps, ray_tree};
+use crate::output::{WriteError, save_png, write_atomically};
+use crate::probe::{self, ProbeTarget};
+use crate::render::{Rendered, Settings, render, render_every_depth};
 use crate::sampling::SamplePattern;
 use crate::scene::Scene;
 use crate::stack::MAX_DEPTH_LIMIT;
@@ -26,6 +29,8 @@ pub struct Chapter<S: Step> {
     pub max_depth: u32,
     /// The default `--spp`.
     pub spp: u32,
+    /// The pixel whose ray tree is drawn when `--probe` is not given.
+    pub probe: ProbeTarget,
     pub step: S,
 }
 
@@ -66,9 +71,31 @@ pub struct Options {
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
 
+    /// Print the ray tree of pixel X,Y (0,0 = top left) and draw it in ray-tree.png
+    #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
+    pub probe: Option<(u32, u32)>,
+
+    /// Sweep the max depth from 1 to N into depth-sweep/ [default: --max-depth, in chapters 3-5]
+    #[arg(long, value_name = "N", allow_negative_numbers = true,
+          value_parser = clap::value_parser!(u32).range(1..=MAX_DEPTH_LIMIT as i64))]
+    pub sweep: Option<u32>,
+
+    /// Write only render.png: no heat maps, ray tree or depth sweep
+    #[arg(long)]
+    pub no_diagrams: bool,
+
     /// Print nothing but errors: no progress bar, no summary
     #[arg(long, short)]
     pub quiet: bool,
+}
+
+fn parse_pixel(text: &str) -> Result<(u32, u32), String> {
+    let parsed = text
+        .split_once(',')
+        .and_then(|(x, y)| Some((x.trim().parse().ok()?, y.trim().parse().ok()?)));
+    parsed.ok_or_else(|| {
+        "a pixel is two whole numbers X,Y, e.g. 600,320 (0,0 is the top left)".into()
+    })
 }
 
 fn parse_spp(text: &str) -> Result<u32, String> {
@@ -113,6 +140,15 @@ pub enum CliError {
     },
     #[error("{0}; choose another folder with --out")]
     Write(#[from] WriteError),
+    #[error(
+        "--probe {x},{y} is outside the {width}×{height} image: X must be below {width}, Y below {height}"
+    )]
+    ProbeOutside {
+        x: u32,
+        y: u32,
+        width: u32,
+        height: u32,
+    },
 }
 
 impl Options {
@@ -164,6 +200,16 @@ impl Options {
                 pixels,
             });
         }
+        if let Some((x, y)) = self.probe
+            && (x >= self.width || y >= self.height)
+        {
+            return Err(CliError::ProbeOutside {
+                x,
+                y,
+                width: self.width,
+                height: self.height,
+            });
+        }
         Ok(Settings {
             width: self.width,
             height: self.height,
@@ -178,7 +224,14 @@ impl Options {
 #[derive(Debug)]
 pub struct Report {
     pub rendered: Rendered,
+    pub out_dir: PathBuf,
     pub render_png: PathBuf,
+    /// Every file written, `render.png` first.
+    pub written: Vec<PathBuf>,
+    /// The probed pixel and its ray tree as text, when diagrams are drawn.
+    pub probe: Option<((u32, u32), String)>,
+    /// The depth sweep's numbers and its time, when one was made.
+    pub sweep: Option<(DepthSweep, std::time::Duration)>,
 }
 
 /// Make sure `dir` exists and takes new files, before any work is done.
@@ -206,7 +259,9 @@ pub fn progress_bar(rows: u64, quiet: bool) -> ProgressBar {
     bar
 }
 
-/// Render a chapter with these options and write `render.png`.
+/// Render a chapter with these options and write `render.png`, then,
+/// unless `--no-diagrams`, its heat maps, its probe's ray tree and (in
+/// chapters that trace beyond depth 1, or with `--sweep`) the depth sweep.
 pub fn run<S: Step>(chapter: &Chapter<S>, options: &Options) -> Result<Report, CliError> {
     let settings = options.settings()?;
     let out_dir = options.out_dir(chapter);
@@ -220,10 +275,116 @@ pub fn run<S: Step>(chapter: &Chapter<S>, options: &Options) -> Result<Report, C
 
     let render_png = out_dir.join("render.png");
     save_png(&rendered.image.to_srgb8(), &render_png)?;
-    Ok(Report {
+    let mut report = Report {
         rendered,
-        render_png,
-    })
+        out_dir: out_dir.clone(),
+        render_png: render_png.clone(),
+        written: vec![render_png],
+        probe: None,
+        sweep: None,
+    };
+    if options.no_diagrams {
+        return Ok(report);
+    }
+    write_diagrams(chapter, options, &scene, &camera, &mut report)?;
+    Ok(report)
+}
+
+fn write_diagrams<S: Step>(
+    chapter: &Chapter<S>,
+    options: &Options,
+    scene: &Scene,
+    camera: &Camera,
+    report: &mut Report,
+) -> Result<(), CliError> {
+    let settings = report.rendered.settings;
+    let dir = report.out_dir.clone();
+    let mut png = |name: &str, image: &image::RgbImage| -> Result<(), CliError> {
+        let path = dir.join(name);
+        save_png(image, &path)?;
+        report.written.push(path);
+        Ok(())
+    };
+    png(
+        "depth.png",
+        &heatmaps::depth_figure(chapter.binary, &report.rendered),
+    )?;
+    png(
+        "rays.png",
+        &heatmaps::rays_figure(chapter.binary, &report.rendered),
+    )?;
+
+    let pixel = options.probe.or_else(|| {
+        chapter
+            .probe
+            .pixel(scene, camera, settings.width, settings.height)
+    });
+    if let Some(pixel) = pixel {
+        let (_, log) = probe::probe(scene, camera, &chapter.step, &settings, pixel);
+        let title = format!("{}: the ray tree of one pixel", chapter.binary);
+        png(
+            "ray-tree.png",
+            &ray_tree::ray_tree_figure(scene, camera, &title, pixel, &log),
+        )?;
+        let text = probe::format_tree(scene, pixel, &log);
+        let path = dir.join("probe.txt");
+        write_atomically(&path, |w| std::io::Write::write_all(w, text.as_bytes()))?;
+        report.written.push(path);
+        report.probe = Some((pixel, text));
+    }
+
+    let depth = options
+        .sweep
+        .or((chapter.max_depth > 1).then_some(settings.max_depth));
+    if let Some(depth) = depth {
+        let start = std::time::Instant::now();
+        let sweep_settings = Settings {
+            max_depth: depth,
+            ..settings
+        };
+        let progress = progress_bar(u64::from(settings.height), options.quiet);
+        let images = render_every_depth(scene, camera, &chapter.step, &sweep_settings, &progress);
+        progress.finish_and_clear();
+        let sweep = DepthSweep::new(images.iter().map(|i| i.to_srgb8()).collect());
+        let sweep_dir = dir.join("depth-sweep");
+        prepare_out_dir(&sweep_dir)?;
+        let book_dir = format!("figures/{}/depth-sweep", chapter.binary);
+        report
+            .written
+            .extend(sweep.write(&sweep_dir, chapter.binary, &book_dir)?);
+        report.sweep = Some((sweep, start.elapsed()));
+    }
+    Ok(())
+}
+
+/// Print what a run did: the summary line, the probe when asked for, the
+/// sweep's conclusion, and where the files are.
+pub fn print_report<S: Step>(chapter: &Chapter<S>, options: &Options, report: &Report) {
+    println!("{}: {}", chapter.binary, report.rendered);
+    if let (Some(_), Some((_, text))) = (options.probe, &report.probe) {
+        print!("{text}");
+    }
+    if let Some((sweep, elapsed)) = &report.sweep {
+        println!(
+            "  depth sweep 1 to {} in {:.0} ms: no pixel changes by more than {} level after depth {}",
+            sweep.images.len(),
+            elapsed.as_secs_f64() * 1e3,
+            crate::diagrams::sweep::SETTLED,
+            sweep.settles_at()
+        );
+    }
+    let names: Vec<String> = report
+        .written
+        .iter()
+        .filter(|p| p.parent() == Some(report.out_dir.as_path()))
+        .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
+        .chain(report.sweep.as_ref().map(|_| "depth-sweep/".to_owned()))
+        .collect();
+    println!(
+        "  wrote {} in {}",
+        names.join(", "),
+        report.out_dir.display()
+    );
 }
 
 /// Turn a clap error into the one line the learner sees.
@@ -256,8 +417,7 @@ pub fn main<S: Step>(chapter: &Chapter<S>) -> ExitCode {
     match result {
         Ok((options, report)) => {
             if !options.quiet {
-                println!("{}: {}", chapter.binary, report.rendered);
-                println!("wrote {}", report.render_png.display());
+                print_report(chapter, &options, &report);
             }
             ExitCode::SUCCESS
         }

@@ -9,6 +9,7 @@
 
 pub mod camera;
 pub mod cli;
+pub mod diagrams;
 pub mod light;
 pub mod linear_image;
 pub mod material;
@@ -16,6 +17,7 @@ pub mod optics;
 pub mod output;
 pub mod plane;
 pub mod plot;
+pub mod probe;
 pub mod ray;
 pub mod render;
 pub mod sampling;
@@ -32,7 +34,7 @@ pub use camera::Camera;
 pub use cli::Chapter;
 pub use material::Material;
 pub use ray::{Ray, RayKind};
-pub use render::{Rendered, Settings, render};
+pub use render::{Rendered, Settings, render, render_every_depth};
 pub use sampling::SamplePattern;
 pub use scene::{Hit, Object, Scene};
 pub use trace::{Step, Surface, Tracer};

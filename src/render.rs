@@ -198,6 +198,59 @@ pub fn thousands(n: u64) -> String {
     out
 }
 
+/// Render the image at every max depth from 1 to `settings.max_depth` at
+/// once: one trace per sample, with each ray's contribution added to the
+/// images of every depth limit that would have traced it. The last image
+/// equals [`render`]'s, to the bit.
+pub fn render_every_depth<S: Step + ?Sized>(
+    scene: &Scene,
+    camera: &Camera,
+    step: &S,
+    settings: &Settings,
+    progress: &ProgressBar,
+) -> Vec<LinearImage> {
+    let (width, height) = (settings.width as usize, settings.height as usize);
+    let depths = settings.max_depth as usize;
+    let samples = settings.pattern.len() as f32;
+    // Pixel by pixel, the colours at depth 1, 2, … side by side.
+    let mut colours = vec![Vec3::ZERO; width * height * depths];
+    colours
+        .par_chunks_mut(width * depths)
+        .enumerate()
+        .for_each_init(
+            || Tracer::new(scene, step, settings.max_depth, settings.epsilon).with_depth_colours(),
+            |tracer, (j, row)| {
+                for (i, pixel) in row.chunks_mut(depths).enumerate() {
+                    for &offset in settings.pattern.offsets() {
+                        let ray =
+                            camera.ray(i as u32, j as u32, offset, settings.width, settings.height);
+                        tracer.trace(ray);
+                        for (d, sum) in pixel.iter_mut().enumerate() {
+                            *sum += tracer
+                                .colour_at_depth(d as u32 + 1)
+                                .expect("kept per depth");
+                        }
+                    }
+                    for sum in pixel.iter_mut() {
+                        let average = *sum / samples;
+                        *sum = if average.is_finite() {
+                            average
+                        } else {
+                            Vec3::ZERO
+                        };
+                    }
+                }
+                progress.inc(1);
+            },
+        );
+    (0..depths)
+        .map(|d| {
+            let pixels = colours.iter().skip(d).step_by(depths).copied().collect();
+            LinearImage::from_pixels(settings.width, settings.height, pixels)
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -12,8 +12,7 @@ use raylab::cli::{self, Chapter, Options};
 fn render_chapter<S: Step>(chapter: &Chapter<S>) -> Result<(), cli::CliError> {
     let options = Options::defaults(chapter);
     let report = cli::run(chapter, &options)?;
-    println!("{}: {}", chapter.binary, report.rendered);
-    println!("  wrote {}", report.render_png.display());
+    cli::print_report(chapter, &options, &report);
     Ok(())
 }
 

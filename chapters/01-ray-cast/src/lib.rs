@@ -8,6 +8,7 @@
 use std::f32::consts::PI;
 
 use raylab::light::Sun;
+use raylab::probe::ProbeTarget;
 use raylab::{Chapter, Hit, Ray, Step, Surface, Vec3};
 
 // ANCHOR: constants
@@ -51,6 +52,7 @@ pub const CHAPTER: Chapter<RayCast> = Chapter {
     about: "Chapter 1, ray casting: one ray per pixel, shaded by the sun and the sky.",
     max_depth: 1,
     spp: 1,
+    probe: ProbeTarget::SphereCentre("red"),
     step: RayCast,
 };
 

@@ -35,7 +35,7 @@ fn walk(dir: &Path) -> Vec<std::path::PathBuf> {
 }
 
 #[test]
-fn by_default_it_writes_render_png_into_out_and_says_so() {
+fn by_default_it_writes_its_render_and_diagrams_into_out_and_says_so() {
     let dir = tempfile::tempdir().unwrap();
     let output = run(&["--width", "40", "--height", "30"], dir.path());
     assert!(output.status.success(), "{output:?}");
@@ -46,10 +46,23 @@ fn by_default_it_writes_render_png_into_out_and_says_so() {
     );
     assert!(stdout.contains("Mrays/s"), "{stdout}");
     assert!(
-        stdout.contains("wrote out/ch01-ray-cast/render.png"),
+        stdout.contains(
+            "wrote render.png, depth.png, rays.png, ray-tree.png, probe.txt in out/ch01-ray-cast"
+        ),
         "{stdout}"
     );
-    assert_eq!(files_in(dir.path()), ["out/ch01-ray-cast/render.png"]);
+    let written = [
+        "depth.png",
+        "probe.txt",
+        "ray-tree.png",
+        "rays.png",
+        "render.png",
+    ];
+    let expected: Vec<String> = written
+        .iter()
+        .map(|f| format!("out/ch01-ray-cast/{f}"))
+        .collect();
+    assert_eq!(files_in(dir.path()), expected);
     let image = image_size(&dir.path().join("out/ch01-ray-cast/render.png"));
     assert_eq!(image, (40, 30));
 }
@@ -60,6 +73,24 @@ fn image_size(path: &Path) -> (u32, u32) {
     assert_eq!(&bytes[1..4], b"PNG");
     let word = |at: usize| u32::from_be_bytes(bytes[at..at + 4].try_into().unwrap());
     (word(16), word(20))
+}
+
+#[test]
+fn a_probe_prints_the_ray_tree() {
+    let dir = tempfile::tempdir().unwrap();
+    let output = run(
+        &["--width", "40", "--height", "30", "--probe", "20,20"],
+        dir.path(),
+    );
+    let stdout = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        stdout.contains("ray tree of pixel (20, 20): 1 rays"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains("primary (depth 1, weight 1.0000)"),
+        "{stdout}"
+    );
 }
 
 #[test]
@@ -98,6 +129,13 @@ fn bad_input_gets_one_clear_line_and_exit_code_2() {
             "cannot use output folder 'a-file/inside'",
         ),
         (&["--widht", "3"], "--width"),
+        (
+            &["--probe", "800,10"],
+            "--probe 800,10 is outside the 800×600 image",
+        ),
+        (&["--probe", "12"], "X,Y"),
+        (&["--sweep", "0"], "--sweep"),
+        (&["--sweep", "65"], "1..=64"),
     ];
     for (args, expected) in cases {
         let dir = tempfile::tempdir().unwrap();

@@ -5,6 +5,7 @@
 //! is in the way, the surface is in shadow and gets a tenth of the light.
 
 use ch01_ray_cast::{SUN_LIT, local_light};
+use raylab::probe::ProbeTarget;
 use raylab::{Chapter, Hit, Ray, Step, Surface, Vec3};
 
 // ANCHOR: constants
@@ -49,6 +50,7 @@ pub const CHAPTER: Chapter<Shadows> = Chapter {
     about: "Chapter 2, shadow rays: a feeler ray towards the sun decides whether a point is lit.",
     max_depth: 1,
     spp: 1,
+    probe: ProbeTarget::ShadowOf("red"),
     step: Shadows,
 };
 

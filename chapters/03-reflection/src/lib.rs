@@ -7,6 +7,7 @@
 
 use ch02_shadows::Shadows;
 use raylab::optics::reflect;
+use raylab::probe::ProbeTarget;
 use raylab::{Chapter, Hit, Ray, RayKind, Step, Surface, Vec3};
 
 // ANCHOR: reflection
@@ -42,6 +43,7 @@ pub const CHAPTER: Chapter<Reflection> = Chapter {
     about: "Chapter 3, reflection: mirrors send rays on through a ray stack, up to --max-depth.",
     max_depth: 10,
     spp: 1,
+    probe: ProbeTarget::SphereCentre("mirror"),
     step: Reflection,
 };
 

@@ -8,6 +8,7 @@
 
 use ch03_reflection::Reflection;
 use raylab::optics::{reflect, refract};
+use raylab::probe::ProbeTarget;
 use raylab::{Chapter, Hit, Ray, RayKind, Step, Surface, Vec3};
 
 // ANCHOR: refraction
@@ -68,6 +69,7 @@ pub const CHAPTER: Chapter<Refraction> = Chapter {
     about: "Chapter 4, refraction: glass bends rays by Snell's law, or reflects them all inside.",
     max_depth: 10,
     spp: 1,
+    probe: ProbeTarget::SphereCentre("glass"),
     step: Refraction,
 };
 

@@ -10,6 +10,7 @@
 //! `--spp 5`.
 
 use raylab::Chapter;
+use raylab::probe::ProbeTarget;
 
 pub use ch04_refraction::Refraction;
 
@@ -20,6 +21,7 @@ pub const CHAPTER: Chapter<Refraction> = Chapter {
     about: "Chapter 5, anti-aliasing: five rays per pixel, averaged in linear light.",
     max_depth: 10,
     spp: 5,
+    probe: ProbeTarget::SphereCentre("glass"),
     step: Refraction,
 };
 // ANCHOR_END: chapter

@@ -1,0 +1,215 @@
+//! The diagrams every chapter writes: their files, their sizes, and what
+//! they say about the ray trees.
+
+use std::path::Path;
+
+use raylab::Step;
+use raylab::cli::{self, Chapter, Options, Report};
+
+/// Run a chapter at 80 × 60 into a fresh folder, with extra flags.
+fn run_small<S: Step>(chapter: &Chapter<S>, dir: &Path, extra: &[&str]) -> Report {
+    let out = dir.join(chapter.binary);
+    let out = out.to_str().unwrap();
+    let mut args = vec![
+        chapter.binary,
+        "--width",
+        "80",
+        "--height",
+        "60",
+        "--quiet",
+        "--out",
+        out,
+    ];
+    args.extend_from_slice(extra);
+    let options = Options::parse_for(chapter, args).unwrap();
+    cli::run(chapter, &options).unwrap()
+}
+
+fn png_size(path: &Path) -> (u32, u32) {
+    let image = image::open(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    (image.width(), image.height())
+}
+
+#[test]
+fn every_chapter_writes_its_diagrams_as_valid_pngs_of_the_documented_size() {
+    let dir = tempfile::tempdir().unwrap();
+    fn check<S: Step>(chapter: &Chapter<S>, dir: &Path, sweeps: bool) {
+        let report = run_small(chapter, dir, &[]);
+        let out = &report.out_dir;
+        assert_eq!(png_size(&out.join("render.png")), (80, 60));
+        for heat_map in ["depth.png", "rays.png"] {
+            let (w, h) = png_size(&out.join(heat_map));
+            assert!(
+                w > 80 && h > 60,
+                "{heat_map} holds the image plus a colour bar"
+            );
+        }
+        assert_eq!(png_size(&out.join("ray-tree.png")), (1240, 700));
+        assert!(
+            std::fs::read_to_string(out.join("probe.txt"))
+                .unwrap()
+                .starts_with("ray tree of pixel")
+        );
+        let sweep = out.join("depth-sweep");
+        assert_eq!(sweep.exists(), sweeps, "{}", chapter.binary);
+        if sweeps {
+            assert_eq!(png_size(&sweep.join("depth-01.png")), (80, 60));
+            assert_eq!(png_size(&sweep.join("changes.png")), (900, 500));
+            png_size(&sweep.join("montage.png"));
+            let settles = report.sweep.as_ref().unwrap().0.settles_at();
+            assert_eq!(
+                png_size(&sweep.join(format!("diff-1-vs-{settles}.png"))),
+                (80, 60)
+            );
+        }
+        // Nothing half-written is left behind.
+        for entry in std::fs::read_dir(out).unwrap() {
+            let name = entry.unwrap().file_name();
+            assert!(!name.to_string_lossy().ends_with(".tmp"), "{name:?}");
+        }
+    }
+    check(&ch01_ray_cast::CHAPTER, dir.path(), false);
+    check(&ch02_shadows::CHAPTER, dir.path(), false);
+    check(&ch03_reflection::CHAPTER, dir.path(), true);
+    check(&ch04_refraction::CHAPTER, dir.path(), true);
+    check(&ch05_antialiasing::CHAPTER, dir.path(), true);
+}
+
+#[test]
+fn the_heat_map_of_chapter_1_is_uniform() {
+    let dir = tempfile::tempdir().unwrap();
+    let report = run_small(&ch01_ray_cast::CHAPTER, dir.path(), &[]);
+    assert!(report.rendered.deepest.iter().all(|&d| d == 1));
+    assert!(report.rendered.rays.iter().all(|&n| n == 1));
+    // The drawn map: every pixel of the 80 × 60 grid has the same colour.
+    let map = image::open(report.out_dir.join("depth.png"))
+        .unwrap()
+        .to_rgb8();
+    let grid_colours: std::collections::HashSet<_> = map
+        .pixels()
+        .filter(|p| p.0 == raylab::plot::viridis(0.0))
+        .take(80 * 60)
+        .collect();
+    assert_eq!(grid_colours.len(), 1);
+    assert!(
+        map.pixels()
+            .filter(|p| p.0 == raylab::plot::viridis(0.0))
+            .count()
+            >= 80 * 60
+    );
+}
+
+#[test]
+fn the_sweep_changes_pixels_from_depth_1_to_2_and_ends_at_the_render() {
+    let dir = tempfile::tempdir().unwrap();
+    fn check<S: Step>(chapter: &Chapter<S>, dir: &Path) {
+        let report = run_small(chapter, dir, &[]);
+        let csv = std::fs::read_to_string(report.out_dir.join("depth-sweep/changes.csv")).unwrap();
+        let mut lines = csv.lines();
+        assert_eq!(
+            lines.next(),
+            Some("depth,changed_pixels,changed_over_3,max_change")
+        );
+        let first: Vec<u64> = lines
+            .next()
+            .unwrap()
+            .split(',')
+            .map(|v| v.parse().unwrap())
+            .collect();
+        assert_eq!(first[0], 2);
+        assert!(first[1] > 0, "{}: depth 2 changes pixels", chapter.binary);
+        assert_eq!(csv.lines().count(), 10, "rows for depths 2 to 10");
+        let last = image::open(report.out_dir.join("depth-sweep/depth-10.png"))
+            .unwrap()
+            .to_rgb8();
+        let render = image::open(&report.render_png).unwrap().to_rgb8();
+        assert_eq!(
+            last, render,
+            "{}: the sweep's last image is render.png",
+            chapter.binary
+        );
+    }
+    check(&ch03_reflection::CHAPTER, dir.path());
+    check(&ch04_refraction::CHAPTER, dir.path());
+    check(&ch05_antialiasing::CHAPTER, dir.path());
+}
+
+#[test]
+fn probing_the_mirror_shows_one_reflection_of_weight_0_6_at_depth_2() {
+    let dir = tempfile::tempdir().unwrap();
+    let report = run_small(&ch03_reflection::CHAPTER, dir.path(), &["--no-diagrams"]);
+    assert_eq!(
+        report.written.len(),
+        1,
+        "--no-diagrams writes only render.png"
+    );
+    let report = run_small(&ch03_reflection::CHAPTER, dir.path(), &[]);
+    let (_, text) = report.probe.expect("chapter 3 probes the mirror");
+    let reflections: Vec<&str> = text
+        .lines()
+        .filter(|l| l.trim_start().starts_with("reflection"))
+        .collect();
+    assert_eq!(reflections.len(), 1, "{text}");
+    assert!(
+        reflections[0].contains("(depth 2, weight 0.6000)"),
+        "{text}"
+    );
+    assert!(
+        text.lines().nth(1).unwrap().contains("hits mirror"),
+        "{text}"
+    );
+}
+
+#[test]
+fn probing_the_glass_centre_shows_a_refracted_ray_leaving_at_depth_3() {
+    let dir = tempfile::tempdir().unwrap();
+    let report = run_small(
+        &ch04_refraction::CHAPTER,
+        dir.path(),
+        &["--probe", "40,30", "--sweep", "3"],
+    );
+    let (pixel, text) = report.probe.unwrap();
+    assert_eq!(pixel, (40, 30));
+    assert_eq!(
+        report.sweep.unwrap().0.images.len(),
+        3,
+        "--sweep 3 sweeps depths 1 to 3"
+    );
+    let default = run_small(&ch04_refraction::CHAPTER, dir.path(), &[]);
+    let (_, text_default) = default.probe.unwrap();
+    assert_ne!(text, text_default);
+    let lines: Vec<&str> = text_default.lines().collect();
+    assert!(lines[1].contains("hits glass"), "{text_default}");
+    let leaving = lines
+        .iter()
+        .find(|l| l.trim_start().starts_with("refraction (depth 3"))
+        .expect("a refracted ray at depth 3");
+    assert!(
+        !leaving.contains("hits glass"),
+        "it has left the glass: {leaving}"
+    );
+}
+
+#[test]
+fn a_probe_outside_the_image_is_refused() {
+    let chapter = &ch04_refraction::CHAPTER;
+    let options = Options::parse_for(
+        chapter,
+        [
+            chapter.binary,
+            "--width",
+            "80",
+            "--height",
+            "60",
+            "--probe",
+            "80,10",
+        ],
+    )
+    .unwrap();
+    let err = options.settings().unwrap_err();
+    assert!(
+        err.to_string()
+            .contains("--probe 80,10 is outside the 80×60 image"),
+        "{err}"
+    );
+}
