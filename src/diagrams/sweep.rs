@@ -77,7 +77,7 @@ impl DepthSweep {
     }
 
     /// The numbers as a markdown table with a one-line conclusion, for the book.
-    pub fn summary_markdown(&self, binary: &str, diff_path: &str) -> String {
+    pub fn summary_markdown(&self, binary: &str) -> String {
         let pixels = self.images.first().map_or(1, |i| i.width() * i.height()) as f64;
         let mut out = String::from(
             "| depth d | pixels changed from d − 1 | changed by more than 3 | largest change (of 255) |\n\
@@ -99,7 +99,7 @@ impl DepthSweep {
         let _ = writeln!(
             out,
             "\nIn `{binary}`, from depth {n} on no pixel changes by more than {SETTLED} level \
-             (swept up to depth {last}).\n\n![The change from depth 1 to depth {n}, magnified]({diff_path})"
+             (swept up to depth {last})."
         );
         out
     }
@@ -155,7 +155,8 @@ impl DepthSweep {
     }
 
     /// Write everything into `dir`: `depth-NN.png`, `montage.png`,
-    /// `changes.png`, `changes.csv`, `diff-1-vs-N.png`, `summary.md`.
+    /// `changes.png`, `changes.csv`, `diff-1-vs-N.png`, and for the book
+    /// `summary.md` (the table) and `diff.md` (the line that shows the diff).
     /// `book_dir` is how the book reaches `dir`, for the summary's image link.
     pub fn write(
         &self,
@@ -186,10 +187,12 @@ impl DepthSweep {
             Ok(())
         };
         text("changes.csv", self.csv())?;
-        text(
-            "summary.md",
-            self.summary_markdown(binary, &format!("{book_dir}/{diff_name}")),
-        )?;
+        text("summary.md", self.summary_markdown(binary))?;
+        // The book cannot know N in advance: it includes this line instead.
+        let diff_md = format!(
+            "![{binary}: the change from depth 1 to depth {settles}, magnified 4 times]({book_dir}/{diff_name})\n"
+        );
+        text("diff.md", diff_md)?;
         Ok(written)
     }
 }

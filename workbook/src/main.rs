@@ -1,28 +1,32 @@
-//! The workbook's main job: run every chapter's program with its defaults,
-//! as a learner would, one after the other.
+//! The workbook's main job: render every chapter with its defaults and
+//! every figure of the book, then build the book.
 //!
-//! `cargo run --release -p workbook`
+//! `cargo run --release -p workbook`, from the workspace's root.
 
+use std::path::Path;
 use std::process::ExitCode;
 
-use raylab::Step;
-use raylab::cli::{self, Chapter, Options};
+use workbook::{JobError, Size, book, make_figures};
 
-/// Render one chapter with its default options and print its summary.
-fn render_chapter<S: Step>(chapter: &Chapter<S>) -> Result<(), cli::CliError> {
-    let options = Options::defaults(chapter);
-    let report = cli::run(chapter, &options)?;
-    cli::print_report(chapter, &options, &report);
+fn run() -> Result<(), JobError> {
+    let book_dir = Path::new("book");
+    make_figures(&book_dir.join("src/figures"), Size::DEFAULT, false)?;
+    let index = book::build(book_dir)?;
+    println!(
+        "book: open {} (or run `mdbook serve book`)",
+        index.display()
+    );
     Ok(())
 }
 
 fn main() -> ExitCode {
-    let result = render_chapter(&ch01_ray_cast::CHAPTER)
-        .and_then(|()| render_chapter(&ch02_shadows::CHAPTER))
-        .and_then(|()| render_chapter(&ch03_reflection::CHAPTER))
-        .and_then(|()| render_chapter(&ch04_refraction::CHAPTER))
-        .and_then(|()| render_chapter(&ch05_antialiasing::CHAPTER));
-    match result {
+    if !Path::new("book/book.toml").exists() {
+        eprintln!(
+            "workbook: error: no book/book.toml here: run it from the workspace's root folder"
+        );
+        return ExitCode::from(2);
+    }
+    match run() {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
             eprintln!("workbook: error: {error}");

@@ -1,0 +1,105 @@
+//! Building the book, and the checks that keep its text and code one.
+
+use std::path::{Path, PathBuf};
+
+use crate::JobError;
+
+/// Build the book in `book_dir` (its `book.toml` names the output
+/// folder); returns the path of its `index.html`.
+pub fn build(book_dir: &Path) -> Result<PathBuf, JobError> {
+    let book =
+        mdbook_driver::MDBook::load(book_dir).map_err(|e| JobError::Book(format!("{e:#}")))?;
+    book.build().map_err(|e| JobError::Book(format!("{e:#}")))?;
+    Ok(book.build_dir_for("html").join("index.html"))
+}
+
+/// One `{{#include path}}` or `{{#include path:anchor}}` in a page.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Include {
+    pub page: PathBuf,
+    /// Relative to the page's folder.
+    pub path: String,
+    pub anchor: Option<String>,
+}
+
+/// Every include in the markdown pages under `src`.
+pub fn includes(src: &Path) -> Vec<Include> {
+    let mut found = Vec::new();
+    for page in pages(src) {
+        let text = std::fs::read_to_string(&page).unwrap_or_default();
+        for piece in text.split("{{#include ").skip(1) {
+            let Some(end) = piece.find("}}") else {
+                continue;
+            };
+            let target = piece[..end].trim();
+            let (path, anchor) = match target.split_once(':') {
+                Some((path, anchor)) => (path, Some(anchor.to_owned())),
+                None => (target, None),
+            };
+            found.push(Include {
+                page: page.clone(),
+                path: path.to_owned(),
+                anchor,
+            });
+        }
+    }
+    found
+}
+
+/// The lines between `ANCHOR: name` and `ANCHOR_END: name` in `text`,
+/// without the marker lines themselves (what mdBook shows).
+pub fn anchored(text: &str, name: &str) -> Option<String> {
+    let start = format!("ANCHOR: {name}");
+    let end = format!("ANCHOR_END: {name}");
+    let mut lines = text
+        .lines()
+        .skip_while(|l| !l.trim_start().ends_with(&start) || !l.contains("//"));
+    lines.next()?;
+    let body: Vec<&str> = lines.by_ref().take_while(|l| !l.contains(&end)).collect();
+    let body = body
+        .into_iter()
+        .filter(|l| !l.contains("ANCHOR"))
+        .collect::<Vec<_>>()
+        .join("\n");
+    Some(body)
+}
+
+/// Every `](target)` link in the pages under `src`, with its page.
+pub fn links(src: &Path) -> Vec<(PathBuf, String)> {
+    let mut found = Vec::new();
+    for page in pages(src) {
+        let text = std::fs::read_to_string(&page).unwrap_or_default();
+        for piece in text.split("](").skip(1) {
+            if let Some(end) = piece.find(')') {
+                found.push((page.clone(), piece[..end].to_owned()));
+            }
+        }
+    }
+    found
+}
+
+/// The markdown pages directly under `src`, sorted.
+pub fn pages(src: &Path) -> Vec<PathBuf> {
+    let mut pages: Vec<PathBuf> = std::fs::read_dir(src)
+        .map(|dir| {
+            dir.flatten()
+                .map(|e| e.path())
+                .filter(|p| p.extension().is_some_and(|e| e == "md"))
+                .collect()
+        })
+        .unwrap_or_default();
+    pages.sort();
+    pages
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_anchor_gives_the_lines_between_its_markers() {
+        let text = "a\n// ANCHOR: two\nb\nc\n// ANCHOR_END: two\nd\n";
+        assert_eq!(anchored(text, "two").as_deref(), Some("b\nc"));
+        assert_eq!(anchored(text, "three"), None);
+    }
+}

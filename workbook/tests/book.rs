@@ -1,0 +1,160 @@
+//! The book as a learner meets it: it builds, every listing is real code,
+//! every figure it shows is one the programs make, and no link is broken.
+
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+
+use workbook::book::{anchored, build, includes, links, pages};
+use workbook::{Size, make_figures};
+
+fn book_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../book")
+}
+
+#[test]
+fn every_include_anchor_resolves_to_non_empty_code() {
+    let src = book_dir().join("src");
+    let code: Vec<_> = includes(&src)
+        .into_iter()
+        .filter(|i| !i.path.starts_with("figures/"))
+        .collect();
+    assert!(
+        code.len() >= 20,
+        "the chapters show their code: {} includes",
+        code.len()
+    );
+    for include in code {
+        let file = include.page.parent().unwrap().join(&include.path);
+        let text = std::fs::read_to_string(&file)
+            .unwrap_or_else(|e| panic!("{:?} includes {}: {e}", include.page, include.path));
+        let anchor = include
+            .anchor
+            .as_deref()
+            .expect("code is included by anchor");
+        let body = anchored(&text, anchor).unwrap_or_else(|| {
+            panic!(
+                "{:?}: no anchor '{anchor}' in {}",
+                include.page, include.path
+            )
+        });
+        assert!(
+            !body.trim().is_empty(),
+            "{:?}: anchor '{anchor}' in {} is empty",
+            include.page,
+            include.path
+        );
+    }
+}
+
+#[test]
+fn no_internal_link_is_broken() {
+    let src = book_dir().join("src");
+    let pages_here: BTreeSet<String> = pages(&src)
+        .iter()
+        .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
+        .collect();
+    let mut checked = 0;
+    for (page, target) in links(&src) {
+        let target = target.split_whitespace().next().unwrap_or_default();
+        if target.starts_with("http") || target.starts_with('#') || target.starts_with("figures/") {
+            continue;
+        }
+        let file = target.split('#').next().unwrap();
+        assert!(
+            pages_here.contains(file),
+            "{page:?} links to {target}, which is not a page"
+        );
+        checked += 1;
+    }
+    assert!(checked >= 7, "the summary links every page: {checked}");
+}
+
+#[test]
+fn the_book_builds_and_shows_only_figures_the_programs_make() {
+    // A copy of the book, its figures made small, then built.
+    let temp = tempfile::tempdir().unwrap();
+    let book = temp.path().join("book");
+    std::fs::create_dir_all(book.join("src")).unwrap();
+    std::fs::copy(book_dir().join("book.toml"), book.join("book.toml")).unwrap();
+    for page in pages(&book_dir().join("src")) {
+        std::fs::copy(&page, book.join("src").join(page.file_name().unwrap())).unwrap();
+    }
+    // Code includes reach ../../src and ../../chapters: mirror them.
+    for dir in ["src", "chapters"] {
+        copy_tree(&book_dir().join("..").join(dir), &temp.path().join(dir));
+    }
+    let figures = book.join("src/figures");
+    let made = make_figures(
+        &figures,
+        Size {
+            width: 160,
+            height: 120,
+        },
+        true,
+    )
+    .unwrap();
+    let made: BTreeSet<String> = made
+        .iter()
+        .map(|p| {
+            p.strip_prefix(book.join("src"))
+                .unwrap()
+                .to_string_lossy()
+                .into_owned()
+        })
+        .collect();
+
+    let src = book.join("src");
+    let mut shown = 0;
+    for (page, target) in links(&src)
+        .into_iter()
+        .filter(|(_, t)| t.starts_with("figures/"))
+    {
+        let file = target.split_whitespace().next().unwrap();
+        assert!(
+            made.contains(file),
+            "{page:?} shows {file}, which no program makes"
+        );
+        shown += 1;
+    }
+    for include in includes(&src)
+        .into_iter()
+        .filter(|i| i.path.starts_with("figures/"))
+    {
+        assert!(
+            made.contains(&include.path),
+            "{:?} includes {}, which no program makes",
+            include.page,
+            include.path
+        );
+    }
+    assert!(shown >= 30, "the book shows the figures: {shown}");
+
+    let index = build(&book).unwrap();
+    assert!(index.exists());
+    for page in pages(&src) {
+        let name = page.file_stem().unwrap().to_string_lossy().into_owned();
+        if name == "SUMMARY" {
+            continue;
+        }
+        let html =
+            std::fs::read_to_string(book.join("build").join(format!("{name}.html"))).unwrap();
+        assert!(
+            !html.contains("{{#include"),
+            "{name}: an include was not resolved"
+        );
+    }
+    let ch4 = std::fs::read_to_string(book.join("build/ch04-refraction.html")).unwrap();
+    assert!(ch4.contains("send_refraction"), "chapter 4 shows its code");
+}
+
+fn copy_tree(from: &Path, to: &Path) {
+    std::fs::create_dir_all(to).unwrap();
+    for entry in std::fs::read_dir(from).unwrap().flatten() {
+        let path = entry.path();
+        if path.is_dir() {
+            copy_tree(&path, &to.join(entry.file_name()));
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            std::fs::copy(&path, to.join(entry.file_name())).unwrap();
+        }
+    }
+}
