@@ -320,13 +320,15 @@ fn write_diagrams<S: Step>(
             .pixel(scene, camera, settings.width, settings.height)
     });
     if let Some(pixel) = pixel {
-        let (_, log) = probe::probe(scene, camera, &chapter.step, &settings, pixel);
-        let title = format!("{}: the ray tree of one pixel", chapter.binary);
-        png(
-            "ray-tree.png",
-            &ray_tree::ray_tree_figure(scene, camera, &title, pixel, &log),
-        )?;
-        let text = probe::format_tree(scene, pixel, &log);
+        let trees = probe::probe(scene, camera, &chapter.step, &settings, pixel);
+        let title = match trees.len() {
+            1 => format!("{}: the ray tree of one pixel", chapter.binary),
+            n => format!("{}: the {n} ray trees of one pixel", chapter.binary),
+        };
+        let rays: Vec<_> = trees.iter().flat_map(|t| t.rays.iter().copied()).collect();
+        let figure = ray_tree::ray_tree_figure(scene, camera, &title, pixel, &rays);
+        png("ray-tree.png", &figure)?;
+        let text = probe::format_tree(scene, pixel, &trees);
         let path = dir.join("probe.txt");
         write_atomically(&path, |w| std::io::Write::write_all(w, text.as_bytes()))?;
         report.written.push(path);

@@ -3,7 +3,7 @@
 use std::fmt::Write;
 
 use crate::camera::Camera;
-use crate::ray::{Ray, RayKind};
+use crate::ray::RayKind;
 use crate::render::Settings;
 use crate::scene::Scene;
 use crate::trace::{Step, TracedRay, Tracer};
@@ -44,34 +44,72 @@ impl ProbeTarget {
     }
 }
 
-/// The ray tree through the centre of pixel `(x, y)`, every ray in the
-/// order it was traced (parents before children).
+/// One sample's ray tree: where in the pixel it started, and every ray in
+/// the order it was traced (parents before children).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SampleTree {
+    pub offset: (f32, f32),
+    pub rays: Vec<TracedRay>,
+}
+
+/// The ray trees of pixel `(x, y)`, one per sample of the pattern: one
+/// tree with one sample per pixel, five with the lab's five rays.
 pub fn probe<S: Step + ?Sized>(
     scene: &Scene,
     camera: &Camera,
     step: &S,
     settings: &Settings,
     (x, y): (u32, u32),
-) -> (Ray, Vec<TracedRay>) {
-    let ray = camera.ray(x, y, (0.5, 0.5), settings.width, settings.height);
-    let mut tracer = Tracer::new(scene, step, settings.max_depth, settings.epsilon).with_log();
-    tracer.trace(ray);
-    (ray, tracer.log().to_vec())
+) -> Vec<SampleTree> {
+    settings
+        .pattern
+        .offsets()
+        .iter()
+        .map(|&offset| {
+            let ray = camera.ray(x, y, offset, settings.width, settings.height);
+            let mut tracer =
+                Tracer::new(scene, step, settings.max_depth, settings.epsilon).with_log();
+            tracer.trace(ray);
+            SampleTree {
+                offset,
+                rays: tracer.log().to_vec(),
+            }
+        })
+        .collect()
 }
 
-/// The tree as indented text, one ray a line: kind, depth, weight, origin,
-/// direction, what it hit and where, and what it added to the pixel.
-pub fn format_tree(scene: &Scene, pixel: (u32, u32), log: &[TracedRay]) -> String {
+/// The trees as indented text, one ray a line: kind, depth, weight,
+/// origin, direction, what it hit and where, and what it added.
+pub fn format_tree(scene: &Scene, pixel: (u32, u32), trees: &[SampleTree]) -> String {
     let mut out = String::new();
-    let total: glam::Vec3 = log.iter().map(|r| r.added).sum();
+    let count: usize = trees.iter().map(|t| t.rays.len()).sum();
+    let sum: glam::Vec3 = trees.iter().flat_map(|t| &t.rays).map(|r| r.added).sum();
     let _ = writeln!(
         out,
-        "ray tree of pixel ({}, {}): {} rays, colour {} (linear RGB)",
+        "ray tree{} of pixel ({}, {}): {count} rays, colour {} (linear RGB, the average of {} sample{})",
+        if trees.len() == 1 { "" } else { "s" },
         pixel.0,
         pixel.1,
-        log.len(),
-        fmt_vec(total)
+        fmt_vec(sum / trees.len().max(1) as f32),
+        trees.len(),
+        if trees.len() == 1 { "" } else { "s" },
     );
+    for (n, tree) in trees.iter().enumerate() {
+        if trees.len() > 1 {
+            let _ = writeln!(
+                out,
+                "sample {} at ({}, {}) in the pixel:",
+                n + 1,
+                tree.offset.0,
+                tree.offset.1
+            );
+        }
+        format_rays(&mut out, scene, &tree.rays);
+    }
+    out
+}
+
+fn format_rays(out: &mut String, scene: &Scene, log: &[TracedRay]) {
     for (i, ray) in log.iter().enumerate() {
         let indent = "  ".repeat(level(log, i));
         let hit = match ray.hit {
@@ -98,7 +136,6 @@ pub fn format_tree(scene: &Scene, pixel: (u32, u32), log: &[TracedRay]) -> Strin
             fmt_vec(ray.ray.direction),
         );
     }
-    out
 }
 
 /// How many ancestors a ray has in the log.

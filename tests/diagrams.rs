@@ -48,7 +48,7 @@ fn every_chapter_writes_its_diagrams_as_valid_pngs_of_the_documented_size() {
         assert!(
             std::fs::read_to_string(out.join("probe.txt"))
                 .unwrap()
-                .starts_with("ray tree of pixel")
+                .starts_with("ray tree")
         );
         let sweep = out.join("depth-sweep");
         assert_eq!(sweep.exists(), sweeps, "{}", chapter.binary);
@@ -187,6 +187,36 @@ fn probing_the_glass_centre_shows_a_refracted_ray_leaving_at_depth_3() {
     assert!(
         !leaving.contains("hits glass"),
         "it has left the glass: {leaving}"
+    );
+}
+
+#[test]
+fn chapter_2_probes_a_ground_pixel_whose_feeler_is_blocked() {
+    let dir = tempfile::tempdir().unwrap();
+    let report = run_small(&ch02_shadows::CHAPTER, dir.path(), &[]);
+    let (_, text) = report.probe.unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert!(lines[1].contains("hits ground"), "{text}");
+    assert!(
+        lines[2].trim_start().starts_with("shadow") && lines[2].contains("in shadow"),
+        "{text}"
+    );
+}
+
+#[test]
+fn chapter_5_probes_one_tree_per_sample() {
+    let dir = tempfile::tempdir().unwrap();
+    let report = run_small(&ch05_antialiasing::CHAPTER, dir.path(), &[]);
+    let (_, text) = report.probe.unwrap();
+    assert!(text.starts_with("ray trees of pixel"), "{text}");
+    assert_eq!(
+        text.lines().filter(|l| l.starts_with("sample ")).count(),
+        5,
+        "{text}"
+    );
+    assert!(
+        text.contains("sample 2 at (0.25, 0.25) in the pixel:"),
+        "{text}"
     );
 }
 

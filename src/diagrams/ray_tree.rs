@@ -32,6 +32,9 @@ struct View {
     /// Where the panel sits on the canvas, pixels.
     left: f32,
     width: f32,
+    /// Where the sun's direction is drawn: in a corner rays rarely cross
+    /// (`true` for the top-right corner, `false` for the bottom-right).
+    sun_at_top: bool,
     /// For a side view, the vertical plane shown (a point on it and its
     /// normal): spheres are drawn as their cross-section with it.
     plane: Option<(Vec3, Vec3)>,
@@ -57,7 +60,8 @@ impl View {
     }
 }
 
-/// The diagram of one pixel's ray tree, as the renderer traced it.
+/// The diagram of one pixel's ray tree (or the trees of all its samples,
+/// drawn together), as the renderer traced it.
 pub fn ray_tree_figure(
     scene: &Scene,
     camera: &Camera,
@@ -113,6 +117,7 @@ fn top_view() -> View {
         max: Vec2::new(3.5, 3.5),
         left: 50.0,
         width: 440.0,
+        sun_at_top: false,
         plane: None,
     }
 }
@@ -130,6 +135,7 @@ fn side_view(eye: Vec3, primary: Vec3) -> View {
         max: Vec2::new(9.0, 3.3),
         left: 560.0,
         width: 650.0,
+        sun_at_top: true,
         plane: Some((eye, heading.cross(Vec3::Y))),
     }
 }
@@ -209,7 +215,11 @@ fn draw_panel(canvas: &mut Canvas, scene: &Scene, camera: &Camera, view: &View, 
     let sun =
         view.flatten.as_ref()(camera.eye + scene.sun.direction) - view.flatten.as_ref()(camera.eye);
     if let Some(sun) = sun.try_normalize() {
-        let from = (x1 - 70.0, y0 + 60.0);
+        let from = if view.sun_at_top {
+            (x1 - 70.0, y0 + 60.0)
+        } else {
+            (x1 - 70.0, y1 - 60.0)
+        };
         let to = (from.0 + sun.x * 45.0, from.1 - sun.y * 45.0);
         canvas.arrow(from, to, kind_colour(RayKind::Shadow), 2.5, 10.0);
         // The label goes on the side of the start the arrow does not point to.
@@ -274,6 +284,13 @@ fn draw_ray(canvas: &mut Canvas, view: &View, ray: &TracedRay) {
     let colour = kind_colour(ray.kind);
     if ray.kind == RayKind::Shadow {
         canvas.dashed_line(from, to, colour, 1.5, 6.0, 4.0);
+        if ray.hit.is_some() {
+            // Blocked: a cross where the feeler meets the object in the
+            // way, which may be too close to the start to see the line.
+            let blocked = [204, 51, 51];
+            canvas.stroke_line(to.0 - 6.0, to.1 - 6.0, to.0 + 6.0, to.1 + 6.0, blocked, 2.5);
+            canvas.stroke_line(to.0 - 6.0, to.1 + 6.0, to.0 + 6.0, to.1 - 6.0, blocked, 2.5);
+        }
         return;
     }
     let width = 1.0 + 3.0 * ray.weight;
@@ -306,7 +323,7 @@ fn draw_legend(canvas: &mut Canvas) {
             RayKind::TotalInternalReflection,
             "total internal reflection",
         ),
-        (RayKind::Shadow, "shadow ray (dashed)"),
+        (RayKind::Shadow, "shadow ray (dashed; × where blocked)"),
     ];
     for (kind, name) in entries {
         let colour: Rgb = kind_colour(kind);

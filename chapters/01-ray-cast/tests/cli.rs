@@ -84,7 +84,7 @@ fn a_probe_prints_the_ray_tree() {
     );
     let stdout = String::from_utf8(output.stdout).unwrap();
     assert!(
-        stdout.contains("ray tree of pixel (20, 20): 1 rays"),
+        stdout.contains("ray tree of pixel (20, 20): 1 rays, colour"),
         "{stdout}"
     );
     assert!(

@@ -50,7 +50,7 @@ pub const CHAPTER: Chapter<Shadows> = Chapter {
     about: "Chapter 2, shadow rays: a feeler ray towards the sun decides whether a point is lit.",
     max_depth: 1,
     spp: 1,
-    probe: ProbeTarget::ShadowOf("red"),
+    probe: ProbeTarget::ShadowOf("blue"),
     step: Shadows,
 };
 
