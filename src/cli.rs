@@ -16,6 +16,7 @@ use crate::probe::{self, ProbeTarget};
 use crate::render::{Rendered, Settings, render, render_every_depth};
 use crate::sampling::SamplePattern;
 use crate::scene::Scene;
+use crate::scene_file::{self, SceneFileError};
 use crate::stack::MAX_DEPTH_LIMIT;
 use crate::trace::Step;
 
@@ -66,6 +67,10 @@ pub struct Options {
     #[arg(long, value_name = "DISTANCE", default_value_t = 1e-4, value_parser = parse_epsilon,
           allow_negative_numbers = true)]
     pub epsilon: f32,
+
+    /// Render this scene file instead of the lab scene (see scenes/lab.toml)
+    #[arg(long, value_name = "FILE")]
+    pub scene: Option<PathBuf>,
 
     /// Folder to write into [default: out/<program name>] (set per chapter)
     #[arg(long, value_name = "DIR")]
@@ -140,6 +145,8 @@ pub enum CliError {
     },
     #[error("{0}; choose another folder with --out")]
     Write(#[from] WriteError),
+    #[error("{0}")]
+    Scene(#[from] SceneFileError),
     #[error(
         "--probe {x},{y} is outside the {width}×{height} image: X must be below {width}, Y below {height}"
     )]
@@ -264,11 +271,14 @@ pub fn progress_bar(rows: u64, quiet: bool) -> ProgressBar {
 /// chapters that trace beyond depth 1, or with `--sweep`) the depth sweep.
 pub fn run<S: Step>(chapter: &Chapter<S>, options: &Options) -> Result<Report, CliError> {
     let settings = options.settings()?;
+    // Read the scene before anything is written: a bad file writes nothing.
+    let (scene, camera) = match &options.scene {
+        Some(path) => scene_file::load(path)?,
+        None => (Scene::lab(), Camera::lab()),
+    };
     let out_dir = options.out_dir(chapter);
     prepare_out_dir(&out_dir)?;
 
-    let scene = Scene::lab();
-    let camera = Camera::lab();
     let progress = progress_bar(u64::from(settings.height), options.quiet);
     let rendered = render(&scene, &camera, &chapter.step, &settings, &progress);
     progress.finish_and_clear();
@@ -315,9 +325,12 @@ fn write_diagrams<S: Step>(
     )?;
 
     let pixel = options.probe.or_else(|| {
-        chapter
+        // A scene of one's own may not hold the chapter's sphere: then the
+        // image's centre.
+        let target = chapter
             .probe
-            .pixel(scene, camera, settings.width, settings.height)
+            .pixel(scene, camera, settings.width, settings.height);
+        target.or(Some((settings.width / 2, settings.height / 2)))
     });
     if let Some(pixel) = pixel {
         let trees = probe::probe(scene, camera, &chapter.step, &settings, pixel);

@@ -22,6 +22,7 @@ pub mod ray;
 pub mod render;
 pub mod sampling;
 pub mod scene;
+pub mod scene_file;
 pub mod sphere;
 pub mod srgb;
 pub mod stack;

@@ -130,6 +130,11 @@ fn bad_input_gets_one_clear_line_and_exit_code_2() {
         ),
         (&["--widht", "3"], "--width"),
         (
+            &["--scene", "missing.toml"],
+            "cannot read scene 'missing.toml'",
+        ),
+        (&["--scene", "a-file"], "a-file:1:"),
+        (
             &["--probe", "800,10"],
             "--probe 800,10 is outside the 800×600 image",
         ),
