@@ -72,6 +72,10 @@ pub struct Options {
     #[arg(long, value_name = "FILE")]
     pub scene: Option<PathBuf>,
 
+    /// Render again whenever the --scene file is saved, until Ctrl-C
+    #[arg(long, requires = "scene")]
+    pub watch: bool,
+
     /// Folder to write into [default: out/<program name>] (set per chapter)
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
@@ -147,6 +151,10 @@ pub enum CliError {
     Write(#[from] WriteError),
     #[error("{0}")]
     Scene(#[from] SceneFileError),
+    #[error("--watch needs --scene FILE: it renders again when that file is saved")]
+    WatchNeedsScene,
+    #[error("cannot watch the scene file: {0}")]
+    Watch(String),
     #[error(
         "--probe {x},{y} is outside the {width}×{height} image: X must be below {width}, Y below {height}"
     )]
@@ -426,6 +434,10 @@ pub fn main<S: Step>(chapter: &Chapter<S>) -> ExitCode {
             _ => Some(CliError::Usage(usage_line(&e))),
         })
         .and_then(|options| {
+            if options.watch {
+                crate::watch::watch(chapter, &options).map_err(Some)?;
+                return Err(None);
+            }
             let report = run(chapter, &options).map_err(Some)?;
             Ok((options, report))
         });

@@ -27,6 +27,7 @@ pub mod sphere;
 pub mod srgb;
 pub mod stack;
 pub mod trace;
+pub mod watch;
 
 pub use glam::Vec3;
 pub use indicatif;

@@ -38,7 +38,14 @@ pub enum MaterialError {
         "ior is {ior}, but a material that transmits light needs an index of refraction of at least 1"
     )]
     IorBelowOne { ior: f32 },
+    #[error("ior is {ior}, but it must be at most {MAX_IOR} (diamond is 2.42)")]
+    IorTooHigh { ior: f32 },
 }
+
+/// The largest index of refraction accepted. No real material comes near
+/// (germanium, at about 4, is among the highest); far larger ones overflow
+/// `eta²` in the refract formula to infinity.
+pub const MAX_IOR: f32 = 100.0;
 
 impl Material {
     /// A validated material; see [`MaterialError`] for the rules.
@@ -78,6 +85,9 @@ impl Material {
         }
         if transmission > 0.0 && ior < 1.0 {
             return Err(MaterialError::IorBelowOne { ior });
+        }
+        if ior > MAX_IOR {
+            return Err(MaterialError::IorTooHigh { ior });
         }
         Ok(Material {
             albedo,
@@ -164,6 +174,17 @@ mod tests {
         ));
         // An opaque material may carry any ior: it is never used.
         assert!(Material::new(GREY, 0.5, 0.0, 0.5).is_ok());
+    }
+
+    #[test]
+    fn an_ior_too_large_to_compute_with_is_rejected() {
+        // Found by the property tests: with ior 1e29, eta² overflows and a
+        // ray leaving the sphere head-on became NaN.
+        assert!(matches!(
+            Material::new(GREY, 0.0, 0.5, 1e29),
+            Err(MaterialError::IorTooHigh { .. })
+        ));
+        assert!(Material::new(GREY, 0.0, 0.5, 2.42).is_ok());
     }
 
     #[test]

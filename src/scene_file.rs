@@ -21,6 +21,12 @@ use crate::sphere::Sphere;
 pub const MAX_FILE_BYTES: u64 = 1024 * 1024;
 /// The most spheres a scene may hold: each is tested by every ray.
 pub const MAX_OBJECTS: usize = 10_000;
+/// The largest coordinate or radius, in scene units: beyond it 32-bit
+/// floats have too few digits left to tell neighbouring points apart.
+pub const MAX_COORDINATE: f32 = 1e6;
+/// The brightest sun or sky allowed: brighter light would overflow the
+/// sums of a pixel's colour to infinity.
+pub const MAX_RADIANCE: f32 = 1e6;
 
 /// A scene file as written: the TOML tables, before any checking.
 #[derive(Debug, Deserialize)]
@@ -157,6 +163,7 @@ pub fn parse(text: &str, path: &Path) -> Result<(Scene, Camera), SceneFileError>
 /// that do not create light. An error names the object and the rule.
 fn build(file: SceneFile) -> Result<(Scene, Camera), (String, String)> {
     let fail = |object: &str, rule: String| (object.to_owned(), rule);
+    check_bounds(&file)?;
     let c = &file.camera;
     let camera = Camera::look_at(c.eye.into(), c.target.into(), c.up.into(), c.fov)
         .map_err(|e| fail("camera", e.to_string()))?;
@@ -228,6 +235,53 @@ fn build(file: SceneFile) -> Result<(Scene, Camera), (String, String)> {
         })?;
     }
     Ok((scene, camera))
+}
+
+/// Every coordinate and radius within [`MAX_COORDINATE`], every light
+/// within [`MAX_RADIANCE`]. NaN passes here and is caught with its object.
+fn check_bounds(file: &SceneFile) -> Result<(), (String, String)> {
+    let too_far = |object: String, key: &str, values: &[f32]| {
+        if values.iter().any(|v| v.abs() > MAX_COORDINATE) {
+            Err((
+                object,
+                format!(
+                    "{key} {values:?} is beyond ±{MAX_COORDINATE}: keep scenes within a million units"
+                ),
+            ))
+        } else {
+            Ok(())
+        }
+    };
+    let too_bright = |object: &str, key: &str, values: &[f32]| {
+        if values.iter().any(|v| *v > MAX_RADIANCE) {
+            Err((
+                object.to_owned(),
+                format!("{key} {values:?} is brighter than the {MAX_RADIANCE} allowed"),
+            ))
+        } else {
+            Ok(())
+        }
+    };
+    let c = &file.camera;
+    too_far("camera".into(), "eye", &c.eye)?;
+    too_far("camera".into(), "target", &c.target)?;
+    too_far("ground".into(), "point", &file.ground.point)?;
+    too_bright("sun", "brightness", &[file.sun.brightness])?;
+    too_bright("sky", "horizon", &file.sky.horizon)?;
+    too_bright("sky", "zenith", &file.sky.zenith)?;
+    for (n, s) in file.sphere.iter().enumerate() {
+        let name = || {
+            format!(
+                "sphere '{}'",
+                s.name
+                    .clone()
+                    .unwrap_or_else(|| format!("sphere {}", n + 1))
+            )
+        };
+        too_far(name(), "centre", &s.centre)?;
+        too_far(name(), "radius", &[s.radius])?;
+    }
+    Ok(())
 }
 
 /// A direction from the file, normalised, or why it cannot be.
@@ -463,6 +517,20 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(err.starts_with("cannot read scene"), "{err}");
+    }
+
+    #[test]
+    fn coordinates_and_lights_beyond_a_million_are_refused() {
+        let err = error_of(&lab_with("radius = 1.0", "radius = 1e7"));
+        assert!(
+            err.contains("sphere 'red': radius [10000000.0] is beyond ±1000000"),
+            "{err}"
+        );
+        let err = error_of(&lab_with("brightness = 25.0", "brightness = 1e30"));
+        assert!(
+            err.contains("sun: brightness") && err.contains("brighter than"),
+            "{err}"
+        );
     }
 
     #[test]

@@ -74,6 +74,44 @@ pub fn make_extras(dir: &Path, size: Size) -> Result<Vec<PathBuf>, JobError> {
     Ok(written)
 }
 
+/// The scene files' renders, each with the chapter and depth that make
+/// its point: `(figure, scene file, max depth)`.
+pub const SCENE_FIGURES: [(&str, &str, u32); 4] = [
+    ("two-mirrors-depth-2.png", "two-mirrors.toml", 2),
+    ("two-mirrors-depth-20.png", "two-mirrors.toml", 20),
+    ("water-and-glass.png", "water-and-glass.toml", 10),
+    (
+        "total-internal-reflection.png",
+        "total-internal-reflection.toml",
+        10,
+    ),
+];
+
+/// Render the scene files of `scenes` into `dir` with chapter 4's step
+/// (which does everything chapters 2 and 3 do, and refraction).
+pub fn make_scene_figures(dir: &Path, scenes: &Path, size: Size) -> Result<Vec<PathBuf>, JobError> {
+    raylab::cli::prepare_out_dir(dir)?;
+    let mut written = Vec::new();
+    for (name, file, max_depth) in SCENE_FIGURES {
+        let (scene, camera) =
+            raylab::scene_file::load(&scenes.join(file)).map_err(raylab::cli::CliError::from)?;
+        let settings = settings(size, max_depth, 1, 1e-4);
+        let image = render(
+            &scene,
+            &camera,
+            &ch04_refraction::Refraction,
+            &settings,
+            &ProgressBar::hidden(),
+        )
+        .image
+        .to_srgb8();
+        let path = dir.join(name);
+        save_png(&image, &path)?;
+        written.push(path);
+    }
+    Ok(written)
+}
+
 /// Why a shadow ray starts a little way off its surface: rounding puts the
 /// computed hit point a hair inside the surface about half the time.
 fn shadow_offset_diagram() -> RgbImage {

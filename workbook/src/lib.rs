@@ -62,7 +62,13 @@ fn chapter_figures<S: Step>(
 }
 
 /// Every figure the book shows, written under `figures`; returns the files.
-pub fn make_figures(figures: &Path, size: Size, quiet: bool) -> Result<Vec<PathBuf>, JobError> {
+/// `scenes` is the folder of scene files (`scenes/` at the workspace root).
+pub fn make_figures(
+    figures: &Path,
+    scenes: &Path,
+    size: Size,
+    quiet: bool,
+) -> Result<Vec<PathBuf>, JobError> {
     let mut written = Vec::new();
     written.extend(chapter_figures(
         &ch01_ray_cast::CHAPTER,
@@ -95,6 +101,11 @@ pub fn make_figures(figures: &Path, size: Size, quiet: bool) -> Result<Vec<PathB
         quiet,
     )?);
     written.extend(extras::make_extras(&figures.join("extras"), size)?);
+    written.extend(extras::make_scene_figures(
+        &figures.join("scenes"),
+        scenes,
+        size,
+    )?);
     if !quiet {
         println!(
             "extras: wrote {} figures in {}",

@@ -10,7 +10,12 @@ use workbook::{JobError, Size, book, make_figures};
 
 fn run() -> Result<(), JobError> {
     let book_dir = Path::new("book");
-    make_figures(&book_dir.join("src/figures"), Size::DEFAULT, false)?;
+    make_figures(
+        &book_dir.join("src/figures"),
+        Path::new("scenes"),
+        Size::DEFAULT,
+        false,
+    )?;
     let index = book::build(book_dir)?;
     println!(
         "book: open {} (or run `mdbook serve book`)",

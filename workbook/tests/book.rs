@@ -27,10 +27,23 @@ fn every_include_anchor_resolves_to_non_empty_code() {
         let file = include.page.parent().unwrap().join(&include.path);
         let text = std::fs::read_to_string(&file)
             .unwrap_or_else(|e| panic!("{:?} includes {}: {e}", include.page, include.path));
-        let anchor = include
-            .anchor
-            .as_deref()
-            .expect("code is included by anchor");
+        // Rust code is shown by anchor, a region that names what it holds;
+        // a scene file may be shown whole.
+        let Some(anchor) = include.anchor.as_deref() else {
+            assert!(
+                include.path.ends_with(".toml"),
+                "{:?}: {} needs an anchor",
+                include.page,
+                include.path
+            );
+            assert!(
+                !text.trim().is_empty(),
+                "{:?}: {} is empty",
+                include.page,
+                include.path
+            );
+            continue;
+        };
         let body = anchored(&text, anchor).unwrap_or_else(|| {
             panic!(
                 "{:?}: no anchor '{anchor}' in {}",
@@ -79,20 +92,17 @@ fn the_book_builds_and_shows_only_figures_the_programs_make() {
     for page in pages(&book_dir().join("src")) {
         std::fs::copy(&page, book.join("src").join(page.file_name().unwrap())).unwrap();
     }
-    // Code includes reach ../../src and ../../chapters: mirror them.
-    for dir in ["src", "chapters"] {
+    // Code includes reach ../../src, ../../chapters and ../../scenes: mirror them.
+    for dir in ["src", "chapters", "scenes"] {
         copy_tree(&book_dir().join("..").join(dir), &temp.path().join(dir));
     }
     let figures = book.join("src/figures");
-    let made = make_figures(
-        &figures,
-        Size {
-            width: 160,
-            height: 120,
-        },
-        true,
-    )
-    .unwrap();
+    let scenes = temp.path().join("scenes");
+    let size = Size {
+        width: 160,
+        height: 120,
+    };
+    let made = make_figures(&figures, &scenes, size, true).unwrap();
     let made: BTreeSet<String> = made
         .iter()
         .map(|p| {
@@ -153,7 +163,7 @@ fn copy_tree(from: &Path, to: &Path) {
         let path = entry.path();
         if path.is_dir() {
             copy_tree(&path, &to.join(entry.file_name()));
-        } else if path.extension().is_some_and(|e| e == "rs") {
+        } else if path.extension().is_some_and(|e| e == "rs" || e == "toml") {
             std::fs::copy(&path, to.join(entry.file_name())).unwrap();
         }
     }

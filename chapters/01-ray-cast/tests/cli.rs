@@ -178,3 +178,78 @@ fn help_names_every_flag_with_the_chapters_defaults() {
     }
     assert!(help.contains("[default: out/ch01-ray-cast]"), "{help}");
 }
+
+/// `--watch`: a save renders again; a bad save keeps watching; Ctrl-C ends it.
+#[test]
+fn a_watched_scene_is_rendered_again_after_each_save() {
+    use std::io::{BufRead, BufReader};
+    use std::sync::mpsc;
+    use std::time::Duration;
+
+    let dir = tempfile::tempdir().unwrap();
+    let lab = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenes/lab.toml");
+    let scene = dir.path().join("scene.toml");
+    std::fs::copy(&lab, &scene).unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ch01-ray-cast"))
+        .args([
+            "--width",
+            "16",
+            "--height",
+            "12",
+            "--no-diagrams",
+            "--watch",
+            "--scene",
+            "scene.toml",
+        ])
+        .current_dir(dir.path())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let lines = |stream: Box<dyn std::io::Read + Send>| {
+        let (tx, rx) = mpsc::channel();
+        std::thread::spawn(move || {
+            for line in BufReader::new(stream).lines().map_while(Result::ok) {
+                let _ = tx.send(line);
+            }
+        });
+        rx
+    };
+    let stdout = lines(Box::new(child.stdout.take().unwrap()));
+    let stderr = lines(Box::new(child.stderr.take().unwrap()));
+    let wait_for = |rx: &mpsc::Receiver<String>, text: &str| loop {
+        let line = rx.recv_timeout(Duration::from_secs(20)).expect(text);
+        if line.contains(text) {
+            break;
+        }
+    };
+    wait_for(&stdout, "watching scene.toml");
+    let first = std::fs::read(dir.path().join("out/ch01-ray-cast/render.png")).unwrap();
+
+    // A new colour for the red sphere: a new image.
+    let text = std::fs::read_to_string(&scene).unwrap();
+    std::fs::write(&scene, text.replace("[0.8, 0.2, 0.15]", "[0.1, 0.2, 0.9]")).unwrap();
+    wait_for(&stdout, "rendered scene.toml");
+    wait_for(&stdout, "wrote render.png");
+    let second = std::fs::read(dir.path().join("out/ch01-ray-cast/render.png")).unwrap();
+    assert_ne!(first, second, "the save changed the image");
+
+    // A save that does not parse: one error, the image stays, it keeps watching.
+    std::fs::write(&scene, "[camera\n").unwrap();
+    wait_for(&stderr, "keeping the last good image");
+    assert_eq!(
+        std::fs::read(dir.path().join("out/ch01-ray-cast/render.png")).unwrap(),
+        second
+    );
+    std::fs::write(&scene, &text).unwrap();
+    wait_for(&stdout, "rendered scene.toml");
+
+    // Ctrl-C: a clean stop.
+    let status = Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(status.success());
+    wait_for(&stdout, "stopped watching");
+    assert!(child.wait().unwrap().success());
+}
