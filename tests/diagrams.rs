@@ -4,25 +4,11 @@
 use std::path::Path;
 
 use raylab::Step;
-use raylab::cli::{self, Chapter, Options, Report};
+use raylab::cli::{Chapter, Options, Report};
 
 /// Run a chapter at 80 × 60 into a fresh folder, with extra flags.
 fn run_small<S: Step>(chapter: &Chapter<S>, dir: &Path, extra: &[&str]) -> Report {
-    let out = dir.join(chapter.binary);
-    let out = out.to_str().unwrap();
-    let mut args = vec![
-        chapter.binary,
-        "--width",
-        "80",
-        "--height",
-        "60",
-        "--quiet",
-        "--out",
-        out,
-    ];
-    args.extend_from_slice(extra);
-    let options = Options::parse_for(chapter, args).unwrap();
-    cli::run(chapter, &options).unwrap()
+    raylab_tests::run_chapter(chapter, (80, 60), dir, extra)
 }
 
 fn png_size(path: &Path) -> (u32, u32) {

@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 
 use raylab::Step;
-use raylab::cli::{self, Chapter, Options};
+use raylab::cli::{Chapter, Report};
 
 fn scene(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -12,26 +12,19 @@ fn scene(name: &str) -> PathBuf {
         .join(name)
 }
 
-/// Render a chapter at 96 × 72 with extra flags; the 8-bit image.
-fn render_png<S: Step>(chapter: &Chapter<S>, dir: &Path, extra: &[&str]) -> image::RgbImage {
-    let out = dir.join(chapter.binary);
-    let out = out.to_str().unwrap();
-    let mut args = vec![
-        chapter.binary,
-        "--width",
-        "96",
-        "--height",
-        "72",
-        "--quiet",
-        "--no-diagrams",
-        "--out",
-        out,
-    ];
-    args.extend_from_slice(extra);
-    let options = Options::parse_for(chapter, args).unwrap();
-    let report = cli::run(chapter, &options).unwrap();
+/// Render a chapter at 96 × 72 with extra flags, without diagrams.
+fn run_small<S: Step>(chapter: &Chapter<S>, dir: &Path, extra: &[&str]) -> Report {
+    let mut flags = vec!["--no-diagrams"];
+    flags.extend_from_slice(extra);
+    let report = raylab_tests::run_chapter(chapter, (96, 72), dir, &flags);
     assert_eq!(report.rendered.non_finite, 0);
     assert_eq!(report.rendered.over_budget, 0);
+    report
+}
+
+/// The 8-bit image such a run wrote.
+fn render_png<S: Step>(chapter: &Chapter<S>, dir: &Path, extra: &[&str]) -> image::RgbImage {
+    let report = run_small(chapter, dir, extra);
     image::open(&report.render_png).unwrap().to_rgb8()
 }
 
@@ -74,24 +67,7 @@ fn the_extra_scenes_render_without_nan_and_show_what_they_are_for() {
 
     // Snell's window: the scene exists to show total internal reflection.
     let tir = path("total-internal-reflection.toml");
-    let options = Options::parse_for(
-        &ch04_refraction::CHAPTER,
-        [
-            "ch04-refraction",
-            "--width",
-            "96",
-            "--height",
-            "72",
-            "--quiet",
-            "--no-diagrams",
-            "--scene",
-            &tir,
-            "--out",
-            dir.path().join("tir").to_str().unwrap(),
-        ],
-    )
-    .unwrap();
-    let report = cli::run(&ch04_refraction::CHAPTER, &options).unwrap();
+    let report = run_small(&ch04_refraction::CHAPTER, dir.path(), &["--scene", &tir]);
     let counts = report.rendered.counts;
     assert!(
         counts.get(raylab::RayKind::TotalInternalReflection)
