@@ -109,12 +109,9 @@ pub enum SceneFileError {
         column: usize,
         message: String,
     },
-    #[error("scene '{}': {object}: {rule}", path.display())]
-    Invalid {
-        path: PathBuf,
-        object: String,
-        rule: String,
-    },
+    /// A rule broken; the message names the object, e.g. "sphere 'glass': …".
+    #[error("scene '{}': {message}", path.display())]
+    Invalid { path: PathBuf, message: String },
     #[error("scene '{}' has {count} spheres, more than the {MAX_OBJECTS} allowed", path.display())]
     TooManyObjects { path: PathBuf, count: usize },
 }
@@ -150,26 +147,22 @@ pub fn parse(text: &str, path: &Path) -> Result<(Scene, Camera), SceneFileError>
             count: file.sphere.len(),
         });
     }
-    let invalid = |object: &str, rule: String| SceneFileError::Invalid {
+    build(file).map_err(|message| SceneFileError::Invalid {
         path: path.to_owned(),
-        object: object.to_owned(),
-        rule,
-    };
-    build(file).map_err(|(object, rule)| invalid(&object, rule))
+        message,
+    })
 }
 
 /// Turn the checked-by-type file into a scene, checking every rule that
 /// types cannot: finite numbers, directions that are not zero, materials
-/// that do not create light. An error names the object and the rule.
-fn build(file: SceneFile) -> Result<(Scene, Camera), (String, String)> {
-    let fail = |object: &str, rule: String| (object.to_owned(), rule);
+/// that do not create light. An error names the object, then the rule.
+fn build(file: SceneFile) -> Result<(Scene, Camera), String> {
+    let fail = |object: &str, rule: String| format!("{object}: {rule}");
     check_bounds(&file)?;
     let c = &file.camera;
+    // A NaN or infinite eye or target fails here too: no view direction.
     let camera = Camera::look_at(c.eye.into(), c.target.into(), c.up.into(), c.fov)
         .map_err(|e| fail("camera", e.to_string()))?;
-    if !Vec3::from(c.eye).is_finite() {
-        return Err(fail("camera", "eye must be a finite point".into()));
-    }
 
     let direction = unit("sun", "direction", file.sun.direction)?;
     let brightness = file.sun.brightness;
@@ -213,7 +206,8 @@ fn build(file: SceneFile) -> Result<(Scene, Camera), (String, String)> {
             brightness,
         },
     )
-    .map_err(|e| fail("ground", e.to_string()))?;
+    // The scene's own errors already name their object.
+    .map_err(|e| e.to_string())?;
 
     for (n, s) in file.sphere.iter().enumerate() {
         let name = s
@@ -226,27 +220,20 @@ fn build(file: SceneFile) -> Result<(Scene, Camera), (String, String)> {
             centre: s.centre.into(),
             radius: s.radius,
         };
-        scene.add_sphere(&name, shape, material).map_err(|e| {
-            let message = e.to_string();
-            let rule = message
-                .split_once(": ")
-                .map_or(message.clone(), |(_, rule)| rule.to_owned());
-            fail(&format!("sphere '{name}'"), rule)
-        })?;
+        scene
+            .add_sphere(&name, shape, material)
+            .map_err(|e| e.to_string())?;
     }
     Ok((scene, camera))
 }
 
 /// Every coordinate and radius within [`MAX_COORDINATE`], every light
 /// within [`MAX_RADIANCE`]. NaN passes here and is caught with its object.
-fn check_bounds(file: &SceneFile) -> Result<(), (String, String)> {
+fn check_bounds(file: &SceneFile) -> Result<(), String> {
     let too_far = |object: String, key: &str, values: &[f32]| {
         if values.iter().any(|v| v.abs() > MAX_COORDINATE) {
-            Err((
-                object,
-                format!(
-                    "{key} {values:?} is beyond ±{MAX_COORDINATE}: keep scenes within a million units"
-                ),
+            Err(format!(
+                "{object}: {key} {values:?} is beyond ±{MAX_COORDINATE}: keep scenes within a million units"
             ))
         } else {
             Ok(())
@@ -254,9 +241,8 @@ fn check_bounds(file: &SceneFile) -> Result<(), (String, String)> {
     };
     let too_bright = |object: &str, key: &str, values: &[f32]| {
         if values.iter().any(|v| *v > MAX_RADIANCE) {
-            Err((
-                object.to_owned(),
-                format!("{key} {values:?} is brighter than the {MAX_RADIANCE} allowed"),
+            Err(format!(
+                "{object}: {key} {values:?} is brighter than the {MAX_RADIANCE} allowed"
             ))
         } else {
             Ok(())
@@ -285,12 +271,9 @@ fn check_bounds(file: &SceneFile) -> Result<(), (String, String)> {
 }
 
 /// A direction from the file, normalised, or why it cannot be.
-fn unit(object: &str, key: &str, v: [f32; 3]) -> Result<Vec3, (String, String)> {
+fn unit(object: &str, key: &str, v: [f32; 3]) -> Result<Vec3, String> {
     Vec3::from(v).try_normalize().ok_or_else(|| {
-        (
-            object.to_owned(),
-            format!("{key} {v:?} must be finite and not zero: it is a direction"),
-        )
+        format!("{object}: {key} {v:?} must be finite and not zero: it is a direction")
     })
 }
 
@@ -531,6 +514,19 @@ mod tests {
             err.contains("sun: brightness") && err.contains("brighter than"),
             "{err}"
         );
+    }
+
+    #[test]
+    fn a_ground_colour_above_one_names_the_ground_once() {
+        let err = error_of(&lab_with(
+            "even = [0.75, 0.75, 0.75]",
+            "even = [1.5, 0.75, 0.75]",
+        ));
+        assert!(
+            err.contains("scene 'test.toml': ground: albedo 1.5"),
+            "{err}"
+        );
+        assert!(!err.contains("ground: ground"), "{err}");
     }
 
     #[test]
