@@ -11,7 +11,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use crate::camera::Camera;
 use crate::diagrams::sweep::DepthSweep;
 use crate::diagrams::{heatmaps, ray_tree};
-use crate::output::{WriteError, save_png, write_atomically};
+use crate::output::{WriteError, save_png, save_text};
 use crate::probe::{self, ProbeTarget};
 use crate::render::{Rendered, Settings, render, render_every_depth};
 use crate::sampling::SamplePattern;
@@ -351,7 +351,7 @@ fn write_diagrams<S: Step>(
         png("ray-tree.png", &figure)?;
         let text = probe::format_tree(scene, pixel, &trees);
         let path = dir.join("probe.txt");
-        write_atomically(&path, |w| std::io::Write::write_all(w, text.as_bytes()))?;
+        save_text(&text, &path)?;
         report.written.push(path);
         report.probe = Some((pixel, text));
     }

@@ -59,6 +59,11 @@ pub fn save_png(image: &RgbImage, path: &Path) -> Result<(), WriteError> {
     })
 }
 
+/// Save text (a probe's listing, a CSV table), atomically.
+pub fn save_text(text: &str, path: &Path) -> Result<(), WriteError> {
+    write_atomically(path, |w| w.write_all(text.as_bytes()))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -138,17 +138,27 @@ impl Rendered {
     }
 }
 
+/// "800×600, 1 spp, max depth 10": what a render was asked for.
+impl fmt::Display for Settings {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{}×{}, {} spp, max depth {}",
+            self.width,
+            self.height,
+            self.pattern.len(),
+            self.max_depth
+        )
+    }
+}
+
 /// The one-line summary: resolution, rays by kind, time and speed.
 impl fmt::Display for Rendered {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let s = &self.settings;
         write!(
             f,
-            "{}×{}, {} spp, max depth {}: {} rays (",
-            s.width,
-            s.height,
-            s.pattern.len(),
-            s.max_depth,
+            "{}: {} rays (",
+            self.settings,
             thousands(self.counts.total())
         )?;
         for (n, kind) in RayKind::ALL.into_iter().enumerate() {

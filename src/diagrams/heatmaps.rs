@@ -7,14 +7,7 @@ use crate::render::Rendered;
 
 /// A short description of the settings, for captions.
 pub fn settings_caption(binary: &str, rendered: &Rendered) -> String {
-    let s = &rendered.settings;
-    format!(
-        "{binary}, {}×{}, {} spp, max depth {}.",
-        s.width,
-        s.height,
-        s.pattern.len(),
-        s.max_depth
-    )
+    format!("{binary}, {}.", rendered.settings)
 }
 
 /// For each pixel, the depth of the deepest ray its tree reached.

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use image::RgbImage;
 
-use crate::output::{WriteError, save_png, write_atomically};
+use crate::output::{WriteError, save_png, save_text};
 use crate::plot::colour::SERIES;
 use crate::plot::{
     Corner, LinePlot, Series, changed_pixels, magnified_difference, max_change, montage,
@@ -182,7 +182,7 @@ impl DepthSweep {
         png(&diff_name, &diff)?;
         let mut text = |name: &str, contents: String| -> Result<(), WriteError> {
             let path = dir.join(name);
-            write_atomically(&path, |w| std::io::Write::write_all(w, contents.as_bytes()))?;
+            save_text(&contents, &path)?;
             written.push(path);
             Ok(())
         };
