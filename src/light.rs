@@ -1,6 +1,6 @@
 //! Where the light comes from: a sky that fills every direction, and a sun.
 
-use glam::Vec3;
+use crate::Vec3;
 
 /// The sky seen along a direction: pale at the horizon, deep blue overhead.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -1,8 +1,8 @@
 //! The image as the renderer makes it: linear light, one `Vec3` a pixel.
 
-use glam::Vec3;
 use image::RgbImage;
 
+use crate::Vec3;
 use crate::srgb::encode_channel;
 
 /// A `width` × `height` grid of linear RGB colours, row 0 at the top.

@@ -1,6 +1,6 @@
 //! Materials: how much light a surface keeps, mirrors and lets through.
 
-use glam::Vec3;
+use crate::Vec3;
 
 /// What a surface does with light.
 ///

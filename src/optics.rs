@@ -1,6 +1,6 @@
 //! The two laws of geometric optics a Whitted ray tracer needs.
 
-use glam::Vec3;
+use crate::Vec3;
 
 // ANCHOR: reflect
 /// Mirror `d` about the normal `n` (GLSL `reflect`): `d − 2·dot(d, n)·n`.

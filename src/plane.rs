@@ -1,7 +1,6 @@
 //! Planes: the ground, and its checkerboard.
 
-use glam::Vec3;
-
+use crate::Vec3;
 use crate::ray::Ray;
 
 /// An infinite plane through `point` with unit `normal`.

@@ -83,7 +83,7 @@ pub fn probe<S: Step + ?Sized>(
 pub fn format_tree(scene: &Scene, pixel: (u32, u32), trees: &[SampleTree]) -> String {
     let mut out = String::new();
     let count: usize = trees.iter().map(|t| t.rays.len()).sum();
-    let sum: glam::Vec3 = trees.iter().flat_map(|t| &t.rays).map(|r| r.added).sum();
+    let sum: crate::Vec3 = trees.iter().flat_map(|t| &t.rays).map(|r| r.added).sum();
     let _ = writeln!(
         out,
         "ray tree{} of pixel ({}, {}): {count} rays, colour {} (linear RGB, the average of {} sample{})",
@@ -148,6 +148,6 @@ fn level(log: &[TracedRay], mut i: usize) -> usize {
     level
 }
 
-fn fmt_vec(v: glam::Vec3) -> String {
+fn fmt_vec(v: crate::Vec3) -> String {
     format!("({:.4}, {:.4}, {:.4})", v.x, v.y, v.z)
 }

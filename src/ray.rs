@@ -1,6 +1,6 @@
 //! Rays: a point that moves along a unit direction.
 
-use glam::Vec3;
+use crate::Vec3;
 
 /// A half-line `origin + t · direction`, `t > 0`.
 ///

@@ -3,10 +3,10 @@
 use std::fmt;
 use std::time::{Duration, Instant};
 
-use glam::Vec3;
 use indicatif::ProgressBar;
 use rayon::prelude::*;
 
+use crate::Vec3;
 use crate::camera::Camera;
 use crate::linear_image::LinearImage;
 use crate::ray::RayKind;

@@ -7,9 +7,9 @@
 use std::io::Read;
 use std::path::{Path, PathBuf};
 
-use glam::Vec3;
 use serde::Deserialize;
 
+use crate::Vec3;
 use crate::camera::Camera;
 use crate::light::{Sky, Sun};
 use crate::material::Material;
@@ -272,9 +272,16 @@ fn check_bounds(file: &SceneFile) -> Result<(), String> {
 
 /// A direction from the file, normalised, or why it cannot be.
 fn unit(object: &str, key: &str, v: [f32; 3]) -> Result<Vec3, String> {
-    Vec3::from(v).try_normalize().ok_or_else(|| {
-        format!("{object}: {key} {v:?} must be finite and not zero: it is a direction")
-    })
+    // `normalize`, as `Scene::lab` does, so that `lab.toml` gives the lab
+    // scene to the last bit; the checks catch what it cannot normalise.
+    let unit = Vec3::from(v).normalize();
+    if unit.is_finite() && unit.is_normalized() {
+        Ok(unit)
+    } else {
+        Err(format!(
+            "{object}: {key} {v:?} must be finite and not zero: it is a direction"
+        ))
+    }
 }
 
 /// TOML's error as one line with its line and column; for an unknown key,

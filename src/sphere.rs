@@ -1,7 +1,6 @@
 //! Spheres: the ray–sphere quadratic.
 
-use glam::Vec3;
-
+use crate::Vec3;
 use crate::ray::Ray;
 
 /// A sphere with centre `c` and radius `R`.

@@ -4,6 +4,7 @@
 //! this tracer, for another reason: a fixed-size array on the thread's own
 //! stack costs no heap allocation per ray or per pixel.
 
+use crate::Vec3;
 use crate::ray::{Ray, RayKind};
 
 /// The deepest `--max-depth` a render accepts.
@@ -40,8 +41,8 @@ impl Default for RayStack {
     fn default() -> Self {
         let empty = PendingRay {
             ray: Ray {
-                origin: glam::Vec3::ZERO,
-                direction: glam::Vec3::Z,
+                origin: Vec3::ZERO,
+                direction: Vec3::Z,
             },
             kind: RayKind::Primary,
             weight: 0.0,
@@ -85,7 +86,7 @@ impl RayStack {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use glam::Vec3;
+    use crate::Vec3;
 
     fn pending(depth: u32) -> PendingRay {
         PendingRay {

@@ -1,8 +1,7 @@
 //! The tracer: the ray-stack loop of LAB.md, and the seam where a chapter
 //! plugs in what happens when a ray hits something.
 
-use glam::Vec3;
-
+use crate::Vec3;
 use crate::ray::{Ray, RayKind};
 use crate::scene::{Hit, Object, Scene};
 use crate::stack::{MAX_DEPTH_LIMIT, MAX_SECONDARIES, PendingRay, RayStack};
@@ -37,7 +36,7 @@ const MAX_LOGGED_SHADOWS: usize = 4;
 pub struct Surface<'s> {
     scene: &'s Scene,
     epsilon: f32,
-    sent: [Option<Secondary>; MAX_SECONDARIES],
+    sent: [Secondary; MAX_SECONDARIES],
     sent_len: usize,
     kept: f32,
     shadow_rays: u32,
@@ -48,10 +47,15 @@ pub struct Surface<'s> {
 impl<'s> Surface<'s> {
     fn new(scene: &'s Scene, epsilon: f32, log: bool) -> Self {
         let none = (Ray::new(Vec3::ZERO, Vec3::Z), false);
+        let unsent = Secondary {
+            kind: RayKind::Reflection,
+            ray: none.0,
+            share: 0.0,
+        };
         Surface {
             scene,
             epsilon,
-            sent: [None; MAX_SECONDARIES],
+            sent: [unsent; MAX_SECONDARIES],
             sent_len: 0,
             kept: 1.0,
             shadow_rays: 0,
@@ -105,7 +109,7 @@ impl<'s> Surface<'s> {
             self.sent_len < MAX_SECONDARIES,
             "a step may send at most {MAX_SECONDARIES} rays on from one hit"
         );
-        self.sent[self.sent_len] = Some(Secondary { kind, ray, share });
+        self.sent[self.sent_len] = Secondary { kind, ray, share };
         self.sent_len += 1;
         // Subtracted one share at a time, as LAB.md writes `1 - r - t`.
         self.kept -= share;
@@ -117,8 +121,8 @@ impl<'s> Surface<'s> {
     }
 
     /// The rays sent on so far, in the order they were sent.
-    pub fn sent(&self) -> impl Iterator<Item = Secondary> + '_ {
-        self.sent[..self.sent_len].iter().flatten().copied()
+    pub fn sent(&self) -> &[Secondary] {
+        &self.sent[..self.sent_len]
     }
 }
 
@@ -272,14 +276,14 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
         if let Some(by_depth) = &mut self.by_depth {
             by_depth.fill(Vec3::ZERO);
         }
-        self.stack.push(PendingRay {
+        let mut next = Some(PendingRay {
             ray: primary,
             kind: RayKind::Primary,
             weight: 1.0,
             depth: 1,
             parent: None,
         });
-        while let Some(pending) = self.stack.pop() {
+        while let Some(pending) = next.take().or_else(|| self.stack.pop()) {
             self.counts.0[pending.kind.index()] += 1;
             traced.rays += 1;
             traced.deepest = traced.deepest.max(pending.depth);
@@ -304,14 +308,16 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
                     traced.over_budget = true;
                     continue;
                 }
-                for secondary in self.surface.sent() {
-                    self.stack.push(PendingRay {
+                for secondary in &self.surface.sent[..self.surface.sent_len] {
+                    if let Some(waiting) = next.replace(PendingRay {
                         ray: secondary.ray,
                         kind: secondary.kind,
                         weight: pending.weight * secondary.share,
                         depth: pending.depth + 1,
                         parent: me,
-                    });
+                    }) {
+                        self.stack.push(waiting);
+                    }
                 }
             }
         }
@@ -322,6 +328,7 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
     /// Add a ray's contribution to the pixel, and to the probe's log and
     /// the per-depth colours when those are kept. Returns the ray's index
     /// in the log.
+    #[inline]
     fn add(
         &mut self,
         traced: &mut Traced,

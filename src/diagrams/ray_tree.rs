@@ -1,9 +1,10 @@
 //! One pixel's ray tree drawn in the scene: from above, and from the side.
 
-use glam::{Vec2, Vec3};
+use glam::Vec2;
 use image::RgbImage;
 
 use super::kind_colour;
+use crate::Vec3;
 use crate::camera::Camera;
 use crate::plot::colour::{AXIS, FRAME, GRID, TEXT, TEXT_MUTED, WHITE, mix};
 use crate::plot::{Anchor, Canvas, Rgb};
