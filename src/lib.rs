@@ -24,7 +24,6 @@ pub mod sampling;
 pub mod scene;
 pub mod scene_file;
 pub mod sphere;
-pub mod sphere_pack;
 pub mod srgb;
 pub mod stack;
 pub mod trace;

@@ -8,7 +8,6 @@ use crate::material::{Material, MaterialError};
 use crate::plane::{Checker, Plane};
 use crate::ray::Ray;
 use crate::sphere::Sphere;
-use crate::sphere_pack::SpherePacks;
 
 /// The checkered ground. It neither reflects nor transmits.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -69,8 +68,6 @@ pub enum SceneError {
 pub struct Scene {
     pub ground: Ground,
     spheres: Vec<SceneSphere>,
-    /// The same spheres' shapes, four to a SIMD pack, for the hit tests.
-    packs: SpherePacks,
     pub sky: Sky,
     pub sun: Sun,
 }
@@ -87,7 +84,6 @@ impl Scene {
         Ok(Scene {
             ground,
             spheres: Vec::new(),
-            packs: SpherePacks::default(),
             sky,
             sun,
         })
@@ -113,7 +109,6 @@ impl Scene {
                 centre: shape.centre,
             });
         }
-        self.packs.push(&shape);
         self.spheres.push(SceneSphere {
             name,
             shape,
@@ -192,15 +187,18 @@ impl Scene {
     /// Objects are tested in order (the ground, then the spheres) and only a
     /// strictly nearer hit replaces the best so far, so ties go to the
     /// earlier object.
-    #[inline(always)]
     pub fn nearest_hit(&self, ray: &Ray) -> Option<Hit> {
         let mut nearest = f32::INFINITY;
         let mut object = None;
         if let Some(t) = self.ground.plane.intersect(ray) {
             (nearest, object) = (t, Some(Object::Ground));
         }
-        if let Some((i, t)) = self.packs.nearest(ray, nearest) {
-            (nearest, object) = (t, Some(Object::Sphere(i)));
+        for (i, sphere) in self.spheres.iter().enumerate() {
+            if let Some(t) = sphere.shape.intersect(ray)
+                && t < nearest
+            {
+                (nearest, object) = (t, Some(Object::Sphere(i)));
+            }
         }
         object.map(|object| self.hit_record(ray, nearest, object))
     }
@@ -209,7 +207,11 @@ impl Scene {
     /// Whether the ray meets any surface at all: the shadow-ray query,
     /// which may stop at the first hit it finds.
     pub fn any_hit(&self, ray: &Ray) -> bool {
-        self.ground.plane.intersect(ray).is_some() || self.packs.any(ray)
+        self.ground.plane.intersect(ray).is_some()
+            || self
+                .spheres
+                .iter()
+                .any(|s| s.shape.intersect(ray).is_some())
     }
 
     /// Everything about a hit that the shading needs, computed once for

@@ -276,14 +276,14 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
         if let Some(by_depth) = &mut self.by_depth {
             by_depth.fill(Vec3::ZERO);
         }
-        let mut next = Some(PendingRay {
+        self.stack.push(PendingRay {
             ray: primary,
             kind: RayKind::Primary,
             weight: 1.0,
             depth: 1,
             parent: None,
         });
-        while let Some(pending) = next.take().or_else(|| self.stack.pop()) {
+        while let Some(pending) = self.stack.pop() {
             self.counts.0[pending.kind.index()] += 1;
             traced.rays += 1;
             traced.deepest = traced.deepest.max(pending.depth);
@@ -308,16 +308,14 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
                     traced.over_budget = true;
                     continue;
                 }
-                for secondary in &self.surface.sent[..self.surface.sent_len] {
-                    if let Some(waiting) = next.replace(PendingRay {
+                for secondary in self.surface.sent() {
+                    self.stack.push(PendingRay {
                         ray: secondary.ray,
                         kind: secondary.kind,
                         weight: pending.weight * secondary.share,
                         depth: pending.depth + 1,
                         parent: me,
-                    }) {
-                        self.stack.push(waiting);
-                    }
+                    });
                 }
             }
         }
@@ -328,7 +326,6 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
     /// Add a ray's contribution to the pixel, and to the probe's log and
     /// the per-depth colours when those are kept. Returns the ray's index
     /// in the log.
-    #[inline]
     fn add(
         &mut self,
         traced: &mut Traced,
