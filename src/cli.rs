@@ -1,7 +1,7 @@
 //! The command line every chapter binary shares.
 
 use std::ffi::OsString;
-use std::io::IsTerminal;
+use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -382,19 +382,29 @@ fn write_diagrams<S: Step>(
 
 /// Print what a run did: the summary line, the probe when asked for, the
 /// sweep's conclusion, and where the files are.
+///
+/// A reader that stops reading (`… | head -1`) is not an error: the files
+/// are written by then, so a closed standard output is left at that.
 pub fn print_report<S: Step>(chapter: &Chapter<S>, options: &Options, report: &Report) {
-    println!("{}: {}", chapter.binary, report.rendered);
-    if let (Some(_), Some((_, text))) = (options.probe, &report.probe) {
-        print!("{text}");
+    let _closed = std::io::stdout()
+        .lock()
+        .write_all(report_text(chapter, options, report).as_bytes());
+}
+
+/// The text [`print_report`] prints.
+pub fn report_text<S: Step>(chapter: &Chapter<S>, options: &Options, report: &Report) -> String {
+    let mut text = format!("{}: {}\n", chapter.binary, report.rendered);
+    if let (Some(_), Some((_, tree))) = (options.probe, &report.probe) {
+        text.push_str(tree);
     }
     if let Some((sweep, elapsed)) = &report.sweep {
-        println!(
-            "  depth sweep 1 to {} in {:.0} ms: no pixel changes by more than {} level after depth {}",
+        text.push_str(&format!(
+            "  depth sweep 1 to {} in {:.0} ms: no pixel changes by more than {} level after depth {}\n",
             sweep.images.len(),
             elapsed.as_secs_f64() * 1e3,
             crate::diagrams::sweep::SETTLED,
             sweep.settles_at()
-        );
+        ));
     }
     let names: Vec<String> = report
         .written
@@ -403,11 +413,12 @@ pub fn print_report<S: Step>(chapter: &Chapter<S>, options: &Options, report: &R
         .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
         .chain(report.sweep.as_ref().map(|_| "depth-sweep/".to_owned()))
         .collect();
-    println!(
-        "  wrote {} in {}",
+    text.push_str(&format!(
+        "  wrote {} in {}\n",
         names.join(", "),
         report.out_dir.display()
-    );
+    ));
+    text
 }
 
 /// Turn a clap error into the one line the learner sees.

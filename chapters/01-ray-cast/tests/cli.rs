@@ -253,3 +253,23 @@ fn a_watched_scene_is_rendered_again_after_each_save() {
     wait_for(&stdout, "stopped watching");
     assert!(child.wait().unwrap().success());
 }
+
+#[test]
+fn a_reader_that_stops_reading_does_not_make_it_fail() {
+    // As in `ch01-ray-cast | head -0`: standard output is closed before
+    // the program prints its summary.
+    let dir = tempfile::tempdir().unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ch01-ray-cast"))
+        .args(["--width", "40", "--height", "30", "--no-diagrams"])
+        .current_dir(dir.path())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("the chapter program runs");
+    drop(child.stdout.take());
+    let output = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    assert!(output.status.success(), "{:?}: {stderr}", output.status);
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    assert!(dir.path().join("out/ch01-ray-cast/render.png").exists());
+}
