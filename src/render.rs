@@ -114,6 +114,7 @@ pub fn render<S: Step + ?Sized>(
     colours.par_extend(rayon::iter::repeat_n(Vec3::ZERO, width * height));
     let mut deepest = vec![0u8; width * height];
     let mut rays = vec![0u32; width * height];
+    // ANCHOR: rows
     let tally = colours
         .par_chunks_mut(width)
         .zip(deepest.par_chunks_mut(width))
@@ -145,6 +146,7 @@ pub fn render<S: Step + ?Sized>(
             },
         )
         .reduce(RowTally::default, |a, b| a + b);
+    // ANCHOR_END: rows
     Rendered {
         settings: *settings,
         image: LinearImage::from_pixels(settings.width, settings.height, colours),

@@ -14,6 +14,7 @@ pub const MAX_DEPTH_LIMIT: u32 = 64;
 /// the reflected and the transmitted one).
 pub const MAX_SECONDARIES: usize = 4;
 
+// ANCHOR: capacity
 /// Depth-first, each pop makes room for the children it pushes; the stack
 /// never holds more than one ray plus the waiting siblings of every level.
 pub const STACK_CAPACITY: usize = MAX_DEPTH_LIMIT as usize * (MAX_SECONDARIES - 1) + 1;
@@ -36,6 +37,7 @@ pub struct RayStack {
     rays: [PendingRay; STACK_CAPACITY],
     len: usize,
 }
+// ANCHOR_END: capacity
 
 impl Default for RayStack {
     fn default() -> Self {

@@ -6,9 +6,12 @@ pub mod book;
 pub mod extras;
 
 use std::path::{Path, PathBuf};
+use std::time::Duration;
 
 use raylab::Step;
 use raylab::cli::{self, Chapter, CliError, Options};
+use raylab::output::save_text;
+use raylab::render::thousands;
 
 /// Why the main job stopped.
 #[derive(Debug, thiserror::Error)]
@@ -36,6 +39,17 @@ impl Size {
     };
 }
 
+/// What one chapter's run did, for the book's table of speeds.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Timing {
+    pub binary: &'static str,
+    /// "800×600, 1 spp, max depth 1".
+    pub settings: String,
+    pub rays: u64,
+    pub elapsed: Duration,
+    pub mrays_per_second: f64,
+}
+
 /// Run one chapter as `cargo run -p <binary> -- --out <figures>/<binary>`
 /// would, and print what it did unless quiet.
 fn chapter_figures<S: Step>(
@@ -43,6 +57,7 @@ fn chapter_figures<S: Step>(
     figures: &Path,
     size: Size,
     quiet: bool,
+    timings: &mut Vec<Timing>,
 ) -> Result<Vec<PathBuf>, CliError> {
     let out = figures.join(chapter.binary);
     let args = [
@@ -58,7 +73,44 @@ fn chapter_figures<S: Step>(
     if !quiet {
         cli::print_report(chapter, &options, &report);
     }
+    let rendered = &report.rendered;
+    timings.push(Timing {
+        binary: chapter.binary,
+        settings: rendered.settings.to_string(),
+        rays: rendered.counts.total(),
+        elapsed: rendered.elapsed,
+        mrays_per_second: rendered.mrays_per_second(),
+    });
     Ok(report.written)
+}
+
+/// The book's table of what each chapter's run cost on this machine.
+pub fn speed_table(timings: &[Timing]) -> String {
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let build = if cfg!(debug_assertions) {
+        "a debug build"
+    } else {
+        "a release build"
+    };
+    let mut text = String::from(
+        "| program | image | rays traced | render time | Mrays/s |\n|---|---|---:|---:|---:|\n",
+    );
+    for t in timings {
+        text.push_str(&format!(
+            "| `{}` | {} | {} | {:.1} ms | {:.1} |\n",
+            t.binary,
+            t.settings,
+            thousands(t.rays),
+            t.elapsed.as_secs_f64() * 1e3,
+            t.mrays_per_second
+        ));
+    }
+    text.push_str(&format!(
+        "\nOne run of each program, as the main job ran it on the machine that built \
+         this book: {cores} core{}, {build}.\n",
+        if cores == 1 { "" } else { "s" }
+    ));
+    text
 }
 
 /// Every figure the book shows, written under `figures`; returns the files.
@@ -70,36 +122,46 @@ pub fn make_figures(
     quiet: bool,
 ) -> Result<Vec<PathBuf>, JobError> {
     let mut written = Vec::new();
+    let mut timings = Vec::new();
+    let t = &mut timings;
     written.extend(chapter_figures(
         &ch01_ray_cast::CHAPTER,
         figures,
         size,
         quiet,
+        t,
     )?);
     written.extend(chapter_figures(
         &ch02_shadows::CHAPTER,
         figures,
         size,
         quiet,
+        t,
     )?);
     written.extend(chapter_figures(
         &ch03_reflection::CHAPTER,
         figures,
         size,
         quiet,
+        t,
     )?);
     written.extend(chapter_figures(
         &ch04_refraction::CHAPTER,
         figures,
         size,
         quiet,
+        t,
     )?);
     written.extend(chapter_figures(
         &ch05_antialiasing::CHAPTER,
         figures,
         size,
         quiet,
+        t,
     )?);
+    let speed = figures.join("speed.md");
+    save_text(&speed_table(&timings), &speed)?;
+    written.push(speed);
     written.extend(extras::make_extras(&figures.join("extras"), size)?);
     written.extend(extras::make_scene_figures(
         &figures.join("scenes"),

@@ -92,8 +92,9 @@ fn the_book_builds_and_shows_only_figures_the_programs_make() {
     for page in pages(&book_dir().join("src")) {
         std::fs::copy(&page, book.join("src").join(page.file_name().unwrap())).unwrap();
     }
-    // Code includes reach ../../src, ../../chapters and ../../scenes: mirror them.
-    for dir in ["src", "chapters", "scenes"] {
+    // Code includes reach ../../src, ../../chapters, ../../scenes and
+    // ../../.cargo: mirror them.
+    for dir in ["src", "chapters", "scenes", ".cargo"] {
         copy_tree(&book_dir().join("..").join(dir), &temp.path().join(dir));
     }
     let figures = book.join("src/figures");
