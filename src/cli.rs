@@ -386,13 +386,16 @@ fn write_diagrams<S: Step>(
 /// A reader that stops reading (`… | head -1`) is not an error: the files
 /// are written by then, so a closed standard output is left at that.
 pub fn print_report<S: Step>(chapter: &Chapter<S>, options: &Options, report: &Report) {
-    let _closed = std::io::stdout()
-        .lock()
-        .write_all(report_text(chapter, options, report).as_bytes());
+    let text = report_text(chapter, options, report);
+    if let Err(error) = std::io::stdout().lock().write_all(text.as_bytes())
+        && error.kind() != std::io::ErrorKind::BrokenPipe
+    {
+        eprintln!("{}: could not print the summary: {error}", chapter.binary);
+    }
 }
 
 /// The text [`print_report`] prints.
-pub fn report_text<S: Step>(chapter: &Chapter<S>, options: &Options, report: &Report) -> String {
+fn report_text<S: Step>(chapter: &Chapter<S>, options: &Options, report: &Report) -> String {
     let mut text = format!("{}: {}\n", chapter.binary, report.rendered);
     if let (Some(_), Some((_, tree))) = (options.probe, &report.probe) {
         text.push_str(tree);

@@ -8,10 +8,10 @@ pub mod extras;
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
-use raylab::Step;
 use raylab::cli::{self, Chapter, CliError, Options};
 use raylab::output::save_text;
 use raylab::render::thousands;
+use raylab::{Settings, Step};
 
 /// Why the main job stopped.
 #[derive(Debug, thiserror::Error)]
@@ -43,8 +43,7 @@ impl Size {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Timing {
     pub binary: &'static str,
-    /// "800×600, 1 spp, max depth 1".
-    pub settings: String,
+    pub settings: Settings,
     pub rays: u64,
     pub elapsed: Duration,
     pub mrays_per_second: f64,
@@ -76,7 +75,7 @@ fn chapter_figures<S: Step>(
     let rendered = &report.rendered;
     timings.push(Timing {
         binary: chapter.binary,
-        settings: rendered.settings.to_string(),
+        settings: rendered.settings,
         rays: rendered.counts.total(),
         elapsed: rendered.elapsed,
         mrays_per_second: rendered.mrays_per_second(),
@@ -176,4 +175,34 @@ pub fn make_figures(
         );
     }
     Ok(written)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use raylab::SamplePattern;
+
+    #[test]
+    fn the_speed_table_has_a_row_per_run_with_grouped_rays_and_milliseconds() {
+        let settings = Settings {
+            width: 800,
+            height: 600,
+            max_depth: 10,
+            epsilon: 1e-4,
+            pattern: SamplePattern::with_samples(1).unwrap(),
+        };
+        let timing = Timing {
+            binary: "ch04-refraction",
+            settings,
+            rays: 2_323_022,
+            elapsed: Duration::from_micros(25_700),
+            mrays_per_second: 90.39,
+        };
+        let table = speed_table(&[timing.clone(), timing]);
+        let row =
+            "| `ch04-refraction` | 800×600, 1 spp, max depth 10 | 2,323,022 | 25.7 ms | 90.4 |";
+        assert_eq!(table.matches(row).count(), 2, "{table}");
+        assert!(table.starts_with("| program | image |"), "{table}");
+        assert!(table.contains("a debug build") || table.contains("a release build"));
+    }
 }
