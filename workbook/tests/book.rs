@@ -88,7 +88,9 @@ fn the_book_builds_and_shows_only_figures_the_programs_make() {
     let temp = tempfile::tempdir().unwrap();
     let book = temp.path().join("book");
     std::fs::create_dir_all(book.join("src")).unwrap();
-    std::fs::copy(book_dir().join("book.toml"), book.join("book.toml")).unwrap();
+    for file in ["book.toml", "math.css"] {
+        std::fs::copy(book_dir().join(file), book.join(file)).unwrap();
+    }
     for page in pages(&book_dir().join("src")) {
         std::fs::copy(&page, book.join("src").join(page.file_name().unwrap())).unwrap();
     }
