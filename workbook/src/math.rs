@@ -122,11 +122,9 @@ fn next_opening(
 /// found the way mdBook's own markdown parser finds them.
 fn code_ranges(page: &str) -> Vec<Range<usize>> {
     let mut ranges = Vec::new();
-    let mut events = Parser::new_ext(page, Options::all()).into_offset_iter();
-    while let Some((event, range)) = events.next() {
+    for (event, range) in Parser::new_ext(page, Options::all()).into_offset_iter() {
         match event {
-            Event::Code(_) => ranges.push(range),
-            Event::Start(Tag::CodeBlock(_)) => ranges.push(range),
+            Event::Code(_) | Event::Start(Tag::CodeBlock(_)) => ranges.push(range),
             Event::Html(_) | Event::InlineHtml(_) => ranges.push(range),
             _ => {}
         }
