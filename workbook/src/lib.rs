@@ -4,6 +4,7 @@
 
 pub mod book;
 pub mod extras;
+pub mod math;
 
 use std::path::{Path, PathBuf};
 use std::time::Duration;
