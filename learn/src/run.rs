@@ -164,7 +164,12 @@ fn failure_message(stdout: &str, name: &str) -> Option<String> {
     let mut lines = section.lines().skip_while(|l| !l.contains("panicked at"));
     lines.next()?;
     let message: Vec<&str> = lines
-        .take_while(|l| !l.is_empty() && !l.starts_with("note:") && !l.starts_with("---- "))
+        .take_while(|l| {
+            !l.is_empty()
+                && !l.starts_with("note:")
+                && !l.starts_with("---- ")
+                && !l.starts_with("stack backtrace:")
+        })
         .collect();
     (!message.is_empty()).then(|| message.join(" "))
 }
@@ -174,7 +179,9 @@ pub fn panic_message(stderr: &str) -> Option<String> {
     let mut lines = stderr.lines().skip_while(|l| !l.contains("panicked at"));
     lines.next()?;
     let message: Vec<&str> = lines
-        .take_while(|l| !l.is_empty() && !l.starts_with("note:"))
+        .take_while(|l| {
+            !l.is_empty() && !l.starts_with("note:") && !l.starts_with("stack backtrace:")
+        })
         .collect();
     Some(message.join(" "))
 }

@@ -3,10 +3,12 @@
 //! solution passes it, and the check says one clear thing about each kind
 //! of broken step.
 //!
-//! Every lab here builds into one target folder, `target/learn-check/`,
-//! so the core is compiled for the exercises once and each exercise costs
+//! Every lab here builds into the target folder the learner's exercises
+//! use, `target/learn/`, so the core is compiled for the exercises once
+//! (on a fresh clone, by the first of these tests) and each exercise costs
 //! only its own crate. The labs share that folder's program names, so the
-//! checks take turns (`LOCK`).
+//! checks take turns (`LOCK`), and cargo relinks a learner's program from
+//! its own build the next time they check.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -31,9 +33,8 @@ fn temp_lab() -> (tempfile::TempDir, Lab) {
     let dir = tempfile::tempdir().unwrap();
     let root = root();
     let lab = Lab {
-        target: root.join("target").join("learn-check"),
         dir: dir.path().to_owned(),
-        root,
+        ..Lab::in_workspace(&root)
     };
     (dir, lab)
 }
