@@ -93,7 +93,7 @@ fn every_exercise_fails_its_check_at_its_tests_and_every_solution_passes() {
 }
 
 #[test]
-fn a_shadow_ray_started_on_the_surface_fails_a_test_about_its_origin() {
+fn a_shadow_ray_started_on_the_surface_passes_the_tests_but_not_the_image() {
     let _turn = LOCK.lock().unwrap_or_else(|e| e.into_inner());
     let (_dir, lab) = temp_lab();
     let exercise = solution_with(
