@@ -102,10 +102,15 @@ fn a_shadow_ray_started_on_the_surface_passes_the_tests_but_not_the_image() {
         "hit.point + to_sun * surface.epsilon()",
         "hit.point",
     );
+    // The tests ask where the feeler goes and what it hits, and pass; the
+    // acne shows in the image, and the image is what fails.
     let (verdict, text) = check_quietly(&lab, exercise);
-    assert!(matches!(verdict, Verdict::TestsFail { .. }), "{text}");
     assert!(
-        text.contains("✗ the plane does not shadow itself"),
+        matches!(verdict, Verdict::Differs(c) if c.within_3 < 0.95),
+        "{verdict:?}:\n{text}"
+    );
+    assert!(
+        text.contains("✓ the plane does not shadow itself"),
         "{text}"
     );
 }
