@@ -4,6 +4,7 @@
 
 pub mod book;
 pub mod extras;
+pub mod learn_figures;
 pub mod math;
 
 use std::path::{Path, PathBuf};
@@ -163,6 +164,7 @@ pub fn make_figures(
     save_text(&speed_table(&timings), &speed)?;
     written.push(speed);
     written.extend(extras::make_extras(&figures.join("extras"), size)?);
+    written.extend(learn_figures::make_learn_figures(&figures.join("learn"))?);
     written.extend(extras::make_scene_figures(
         &figures.join("scenes"),
         scenes,

@@ -24,6 +24,7 @@ pub const AMBIENT: f32 = 0.04;
 /// The light a surface sends back by itself: a Lambertian (perfectly
 /// matte) surface lit by the sun with factor `k`, plus the ambient term.
 pub fn local_light(hit: &Hit, sun: &Sun, k: f32) -> Vec3 {
+    // ANCHOR: todo_local_light "Return the Lambert term albedo/π · k · brightness · max(cos θ, 0) plus the ambient term albedo · AMBIENT."
     // Lambert: a surface tilted away from the sun catches its light over a
     // larger area, so each point receives less, in proportion to cos θ.
     let cos = hit.facing_normal.dot(sun.direction).max(0.0);
@@ -32,6 +33,7 @@ pub fn local_light(hit: &Hit, sun: &Sun, k: f32) -> Vec3 {
     // hemisphere: albedo / π of the irradiance leaves in every direction.
     let albedo = hit.material.albedo();
     albedo / PI * irradiance + albedo * AMBIENT
+    // ANCHOR_END: todo_local_light
 }
 // ANCHOR_END: local_light
 

@@ -20,6 +20,7 @@ pub const SUN_IN_SHADOW: f32 = 0.01;
 /// `k` for this hit: [`SUN_LIT`] if a feeler ray towards the sun escapes,
 /// [`SUN_IN_SHADOW`] if it hits anything.
 pub fn sun_factor(hit: &Hit, surface: &mut Surface) -> f32 {
+    // ANCHOR: todo_sun_factor "Cast a feeler ray from the hit point towards the sun: SUN_IN_SHADOW if anything blocks it, SUN_LIT if not."
     let to_sun = surface.scene().sun.direction;
     // Start the feeler a little way towards the sun: from the hit point
     // itself, rounding puts it just inside the surface half of the time,
@@ -30,6 +31,7 @@ pub fn sun_factor(hit: &Hit, surface: &mut Surface) -> f32 {
     } else {
         SUN_LIT
     }
+    // ANCHOR_END: todo_sun_factor
 }
 // ANCHOR_END: shadow_ray
 

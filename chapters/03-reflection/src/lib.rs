@@ -14,6 +14,7 @@ use raylab_cli::Chapter;
 // ANCHOR: reflection
 /// Send the reflected share of the light on along the mirror direction.
 pub fn send_reflection(ray: &Ray, hit: &Hit, surface: &mut Surface) {
+    // ANCHOR: todo_send_reflection "If the material reflects (r > 0), send a Reflection ray of share r along the mirror direction, started epsilon off the surface."
     let r = hit.material.reflection();
     if r > 0.0 {
         // Normalised again: rounding would otherwise shorten or lengthen
@@ -22,6 +23,7 @@ pub fn send_reflection(ray: &Ray, hit: &Hit, surface: &mut Surface) {
         let origin = hit.point + direction * surface.epsilon();
         surface.send(RayKind::Reflection, Ray::new(origin, direction), r);
     }
+    // ANCHOR_END: todo_send_reflection
 }
 // ANCHOR_END: reflection
 

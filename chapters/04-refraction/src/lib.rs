@@ -15,6 +15,7 @@ use raylab_cli::Chapter;
 // ANCHOR: refraction
 /// Send the transmitted share of the light on through the surface.
 pub fn send_refraction(ray: &Ray, hit: &Hit, surface: &mut Surface) {
+    // ANCHOR: todo_send_refraction "If the material transmits (t > 0), send a Refraction ray of share t bent by Snell's law (eta = 1/ior going in, ior coming out), or a TotalInternalReflection ray when refract finds none."
     let t = hit.material.transmission();
     if t <= 0.0 {
         return;
@@ -46,6 +47,7 @@ pub fn send_refraction(ray: &Ray, hit: &Hit, surface: &mut Surface) {
             );
         }
     }
+    // ANCHOR_END: todo_send_refraction
 }
 // ANCHOR_END: refraction
 

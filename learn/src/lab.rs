@@ -1,0 +1,304 @@
+//! The learner's lab: `my-lab/chNN/`, one small crate per exercise, and
+//! the progress file.
+//!
+//! Each exercise is a copy of its chapter's crate with the step blanked,
+//! and is its own workspace: its `Cargo.toml` depends on the finished core
+//! and earlier chapters by path, so chapter 3's exercise stands on the
+//! reference chapters 1 and 2. All exercises build into one target folder
+//! (`target/learn/`), so the core is compiled once and each check
+//! recompiles only the learner's few lines.
+
+use std::collections::BTreeSet;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use crate::exercise::{Exercise, blank};
+
+/// Where a lab lives: the workspace it builds against, the learner's
+/// folder, and the target folder the exercises share.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Lab {
+    /// The raylab workspace's root (the folder with its `Cargo.toml`).
+    pub root: PathBuf,
+    /// The learner's folder, `my-lab/` by default.
+    pub dir: PathBuf,
+    /// The target folder every exercise builds into.
+    pub target: PathBuf,
+}
+
+/// Why the lab could not do what was asked; one line each.
+#[derive(Debug, thiserror::Error)]
+pub enum LabError {
+    #[error("cannot read {}: {source}", path.display())]
+    Read {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    #[error("cannot write {}: {source}", path.display())]
+    Write {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    #[error("{}: a todo marker is broken, {source}", path.display())]
+    Marker {
+        path: PathBuf,
+        source: crate::exercise::MarkerError,
+    },
+    #[error("{}: {what}", path.display())]
+    Manifest { path: PathBuf, what: String },
+}
+
+/// What `start` did with each file of the exercise.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Started {
+    pub folder: PathBuf,
+    pub written: Vec<PathBuf>,
+    /// Files that were there already and were left as they were.
+    pub kept: Vec<PathBuf>,
+}
+
+impl Lab {
+    /// The lab of the workspace at `root`: `root/my-lab`, `root/target/learn`.
+    pub fn in_workspace(root: &Path) -> Lab {
+        Lab {
+            root: root.to_owned(),
+            dir: root.join("my-lab"),
+            target: root.join("target").join("learn"),
+        }
+    }
+
+    /// The folder of one exercise, e.g. `my-lab/ch02`.
+    pub fn folder(&self, exercise: &Exercise) -> PathBuf {
+        self.dir.join(format!("ch{:02}", exercise.number))
+    }
+
+    /// The chapter's own source, the reference solution.
+    pub fn reference_source(&self, exercise: &Exercise) -> PathBuf {
+        self.root.join(exercise.dir).join("src/lib.rs")
+    }
+
+    /// The files of an exercise, as `start` writes them: with the step
+    /// blanked, or (for the author checks) solved as the chapter solves it.
+    pub fn files(
+        &self,
+        exercise: &Exercise,
+        solved: bool,
+    ) -> Result<Vec<(PathBuf, String)>, LabError> {
+        let chapter = self.root.join(exercise.dir);
+        let lib_path = chapter.join("src/lib.rs");
+        let lib = read(&lib_path)?;
+        let blanked = blank(&lib).map_err(|source| LabError::Marker {
+            path: lib_path.clone(),
+            source,
+        })?;
+        let lib = if solved {
+            blanked.solution
+        } else {
+            blanked.exercise
+        };
+        let main = read(&chapter.join("src/main.rs"))?;
+        let manifest = self.manifest(exercise)?;
+        let lock = read(&self.root.join("Cargo.lock"))?;
+        Ok(vec![
+            (PathBuf::from("Cargo.toml"), manifest),
+            // The workspace's own lock file, so that the exercise builds
+            // with exactly the same versions, without the network.
+            (PathBuf::from("Cargo.lock"), lock),
+            (PathBuf::from("src/lib.rs"), lib),
+            (PathBuf::from("src/main.rs"), main),
+        ])
+    }
+
+    /// Lay the exercise into its folder. A file that is already there is
+    /// never touched: the learner's work is theirs.
+    pub fn start(&self, exercise: &Exercise, solved: bool) -> Result<Started, LabError> {
+        let folder = self.folder(exercise);
+        let mut started = Started {
+            folder: folder.clone(),
+            written: Vec::new(),
+            kept: Vec::new(),
+        };
+        for (name, text) in self.files(exercise, solved)? {
+            let path = folder.join(&name);
+            if write_new(&path, &text)? {
+                started.written.push(name);
+            } else {
+                started.kept.push(name);
+            }
+        }
+        Ok(started)
+    }
+
+    /// The exercise's `Cargo.toml`: the chapter's package, with its
+    /// dependencies resolved from the workspace to paths, and the
+    /// workspace's build profile (the core optimised, the learner's crate
+    /// quick to compile).
+    fn manifest(&self, exercise: &Exercise) -> Result<String, LabError> {
+        let chapter_path = self.root.join(exercise.dir).join("Cargo.toml");
+        let chapter: toml::Table = parse_toml(&chapter_path)?;
+        let root_path = self.root.join("Cargo.toml");
+        let root: toml::Table = parse_toml(&root_path)?;
+        let bad = |path: &Path, what: &str| LabError::Manifest {
+            path: path.to_owned(),
+            what: what.to_owned(),
+        };
+        let shared = root
+            .get("workspace")
+            .and_then(|w| w.get("dependencies"))
+            .and_then(|d| d.as_table())
+            .ok_or_else(|| bad(&root_path, "no [workspace.dependencies]"))?;
+        let deps = chapter
+            .get("dependencies")
+            .and_then(|d| d.as_table())
+            .ok_or_else(|| bad(&chapter_path, "no [dependencies]"))?;
+        let mut text = format!(
+            "# Your exercise for {exercise}, made by `cargo run -p learn -- start {}`.\n\
+             # Its own workspace, built against the finished core and earlier chapters.\n\
+             [package]\nname = \"{}\"\nversion = \"0.1.0\"\nedition = \"2024\"\npublish = false\n\n\
+             [dependencies]\n",
+            exercise.number, exercise.package
+        );
+        for (name, spec) in deps {
+            let spec = if spec.get("workspace").and_then(|w| w.as_bool()) == Some(true) {
+                shared
+                    .get(name)
+                    .ok_or_else(|| bad(&root_path, &format!("no workspace dependency `{name}`")))?
+            } else {
+                spec
+            };
+            text.push_str(&format!("{name} = {}\n", self.resolve(exercise, spec)));
+        }
+        text.push_str(
+            "\n[workspace]\n\n\
+             [profile.dev]\nopt-level = 1\n\n\
+             [profile.dev.package.\"*\"]\nopt-level = 3\ndebug = false\n",
+        );
+        Ok(text)
+    }
+
+    /// A dependency's spec as one inline TOML value, with its `path` seen
+    /// from the exercise's folder: relative inside the workspace (so that
+    /// the workspace can move), absolute for a lab elsewhere.
+    fn resolve(&self, exercise: &Exercise, spec: &toml::Value) -> String {
+        let Some(table) = spec.as_table() else {
+            return spec.to_string();
+        };
+        let fields: Vec<String> = table
+            .iter()
+            .map(|(key, value)| match (key.as_str(), value.as_str()) {
+                ("path", Some(path)) => {
+                    let path = self.path_from_exercise(exercise, Path::new(path));
+                    format!("path = {}", toml::Value::String(path))
+                }
+                _ => format!("{key} = {value}"),
+            })
+            .collect();
+        format!("{{ {} }}", fields.join(", "))
+    }
+
+    /// `path` (from the root) as the exercise's `Cargo.toml` should name it.
+    fn path_from_exercise(&self, exercise: &Exercise, path: &Path) -> String {
+        let folder = self.folder(exercise);
+        let target = self.root.join(path);
+        let target = target.canonicalize().unwrap_or(target);
+        match folder.strip_prefix(&self.root) {
+            Ok(inside) => {
+                let up = "../".repeat(inside.components().count());
+                let rest = path.to_string_lossy();
+                match rest.as_ref() {
+                    "." | "" => up.trim_end_matches('/').to_owned(),
+                    rest => format!("{up}{}", rest.trim_start_matches("./")),
+                }
+            }
+            Err(_) => target.to_string_lossy().into_owned(),
+        }
+    }
+
+    /// Where the progress is kept.
+    pub fn progress_path(&self) -> PathBuf {
+        self.dir.join("progress.toml")
+    }
+
+    /// The chapters passed so far.
+    pub fn progress(&self) -> Progress {
+        std::fs::read_to_string(self.progress_path())
+            .ok()
+            .and_then(|text| toml::from_str(&text).ok())
+            .unwrap_or_default()
+    }
+
+    /// Record that chapter `number` passed its check.
+    pub fn record_pass(&self, number: u8) -> Result<(), LabError> {
+        let mut progress = self.progress();
+        if progress.passed.insert(number) {
+            let path = self.progress_path();
+            let text = toml::to_string(&progress).expect("a set of numbers serialises");
+            let text =
+                format!("# Chapters whose check passed (`cargo run -p learn -- list`).\n{text}");
+            write_atomically(&path, &text)?;
+        }
+        Ok(())
+    }
+}
+
+/// What the learner has done, kept in `my-lab/progress.toml`.
+#[derive(Clone, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub struct Progress {
+    #[serde(default)]
+    pub passed: BTreeSet<u8>,
+}
+
+fn read(path: &Path) -> Result<String, LabError> {
+    std::fs::read_to_string(path).map_err(|source| LabError::Read {
+        path: path.to_owned(),
+        source,
+    })
+}
+
+fn parse_toml(path: &Path) -> Result<toml::Table, LabError> {
+    read(path)?
+        .parse()
+        .map_err(|e: toml::de::Error| LabError::Manifest {
+            path: path.to_owned(),
+            what: e.message().to_owned(),
+        })
+}
+
+/// Write `text` to `path` only if no file is there; `false` if one was.
+/// `create_new` makes the test and the creation one step, so not even a
+/// file saved at the same moment is overwritten.
+fn write_new(path: &Path, text: &str) -> Result<bool, LabError> {
+    let fail = |source| LabError::Write {
+        path: path.to_owned(),
+        source,
+    };
+    if let Some(parent) = path.parent() {
+        std::fs::create_dir_all(parent).map_err(fail)?;
+    }
+    match std::fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(path)
+    {
+        Ok(mut file) => {
+            file.write_all(text.as_bytes()).map_err(fail)?;
+            Ok(true)
+        }
+        Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => Ok(false),
+        Err(e) => Err(fail(e)),
+    }
+}
+
+/// Write through a temporary file in the same folder, then rename it over
+/// `path`: a reader sees the old file or the new one, never half of one.
+fn write_atomically(path: &Path, text: &str) -> Result<(), LabError> {
+    let fail = |source| LabError::Write {
+        path: path.to_owned(),
+        source,
+    };
+    let parent = path.parent().unwrap_or(Path::new("."));
+    std::fs::create_dir_all(parent).map_err(fail)?;
+    let tmp = path.with_extension("toml.tmp");
+    std::fs::write(&tmp, text).map_err(fail)?;
+    std::fs::rename(&tmp, path).map_err(fail)
+}

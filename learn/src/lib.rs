@@ -1,0 +1,14 @@
+//! # learn: do the lab yourself
+//!
+//! Each chapter's step as an exercise. `cargo run -p learn -- start 2`
+//! lays chapter 2 with its shadow ray blanked into `my-lab/ch02/`;
+//! `cargo run -p learn -- check 2` builds it, runs the chapter's tests on
+//! it and compares its render with the reference chapter's; `watch 2`
+//! checks again on every save. See `cargo run -p learn -- --help`.
+
+pub mod check;
+pub mod compare;
+pub mod exercise;
+pub mod lab;
+pub mod run;
+pub mod watch;
