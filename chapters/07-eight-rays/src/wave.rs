@@ -1,0 +1,234 @@
+//! Waves: every ray of one depth, for a whole image row, eight at a time.
+//!
+//! The scalar tracer follows one sample's ray tree to the bottom before it
+//! starts the next sample. Here the row's primary rays are traced first,
+//! all of them (wave 1); their reflected and refracted rays, packed densely,
+//! form wave 2; and so on. Each ray leaves a [`Node`] behind: what it added
+//! to its sample, and where its children are in the next wave. The sample's
+//! colour is then summed by walking its tree in the scalar tracer's order,
+//! so the sums round exactly as chapter 5's do.
+
+use raylab::trace::RAY_BUDGET;
+use raylab::{RayKind, Vec3};
+use wide::f32x8;
+
+use crate::intersect::{SceneX8, senders};
+use crate::like::Features;
+use crate::shade::{Light, reflect, refract};
+use crate::soa::{LANES, Rays, Vec3x8};
+
+/// What one traced ray did, kept until its sample's colour is summed.
+#[derive(Clone, Copy, Debug)]
+pub struct Node {
+    /// What the ray added to its sample: `w · (1 − r − t) · local`, or `w · sky`.
+    pub added: Vec3,
+    /// Its children are rays `first_child ..` of the next wave, the
+    /// transmitted one first: the order the scalar ray stack pops them.
+    pub first_child: u32,
+    pub children: u8,
+    pub kind: RayKind,
+    /// Whether it cast a shadow ray.
+    pub shadow: bool,
+}
+
+/// The fixed part of a render: the scene in lanes, the light, the limits.
+pub struct Setup {
+    pub scene: SceneX8,
+    pub light: Light,
+    pub features: Features,
+    pub max_depth: u32,
+    pub epsilon: f32,
+}
+
+/// What eight rays' shading computed: the light they add, and the rays
+/// they send on (for lanes whose masks are set).
+struct Shaded {
+    added: Vec3x8,
+    hit: f32x8,
+    reflects: f32x8,
+    transmits: f32x8,
+    reflected: Option<(Vec3x8, Vec3x8)>,
+    /// The transmitted direction and origin, and the mask of total
+    /// internal reflection (where the mirror direction is used instead).
+    transmitted: Option<(Vec3x8, Vec3x8, f32x8)>,
+    reflection: f32x8,
+    transmission: f32x8,
+}
+
+// ANCHOR: group
+/// Trace and shade one group of eight rays of a wave.
+fn shade_group(setup: &Setup, rays: &Rays, group: usize, can_send: bool) -> Shaded {
+    let (o, d) = (rays.origins(group), rays.directions(group));
+    let w = rays.weights(group);
+    let hits = setup.scene.nearest(o, d);
+    let sky = setup.light.sky(d).scale(w);
+    let mut shaded = Shaded {
+        added: sky,
+        hit: hits.hit,
+        reflects: f32x8::ZERO,
+        transmits: f32x8::ZERO,
+        reflected: None,
+        transmitted: None,
+        reflection: f32x8::ZERO,
+        transmission: f32x8::ZERO,
+    };
+    // Divergence, the cheap way out: when all eight rays see the sky,
+    // none of the surface work below is needed.
+    if hits.hit.none() {
+        return shaded;
+    }
+    let s = setup.scene.surfaces(o, d, &hits);
+    let eps = f32x8::splat(setup.epsilon);
+
+    // Shadow rays from every lane; only hit lanes' answers are used.
+    let in_shadow = if setup.features.shadows {
+        let to_sun = setup.light.to_sun;
+        setup.scene.any(s.point + to_sun.scale(eps), to_sun)
+    } else {
+        f32x8::ZERO
+    };
+    let local = setup.light.local(&s, in_shadow);
+    // `(1 − r) − t`, subtracted one share at a time as `Surface::send` does.
+    let kept = f32x8::ONE - s.reflection - s.transmission;
+    let surface = local.scale(w * kept);
+    // Mask: lanes that hit something show their surface, the others the sky.
+    shaded.added = Vec3x8::select(hits.hit, surface, sky);
+
+    let (reflects, transmits) = senders(&s, &hits, setup.features);
+    shaded.reflects = reflects;
+    shaded.transmits = transmits;
+    // Divergence again: in most groups no lane hit the mirror or the
+    // glass, and the optics is skipped. When 3 of 8 did, all 8 lanes
+    // compute it and the masks keep the 3 answers.
+    if can_send && (reflects | transmits).any() {
+        let mirrored = reflect(d, s.facing_normal);
+        let mirrored_from = s.point + mirrored.scale(eps);
+        if reflects.any() {
+            shaded.reflected = Some((mirrored_from, mirrored));
+            shaded.reflection = w * s.reflection;
+        }
+        if transmits.any() {
+            let eta = s.entering.blend(f32x8::ONE / s.ior, s.ior);
+            let (bent, total) = refract(d, s.facing_normal, eta);
+            let direction = Vec3x8::select(total, mirrored, bent);
+            let from = s.point + direction.scale(eps);
+            shaded.transmitted = Some((from, direction, total));
+            shaded.transmission = w * s.transmission;
+        }
+    }
+    shaded
+}
+// ANCHOR_END: group
+
+/// A row's waves and trees, kept by one worker and reused for every row.
+#[derive(Default)]
+pub struct Waves {
+    /// `rays[d]`: the rays of depth `d + 1`.
+    pub rays: Vec<Rays>,
+    /// `nodes[d][i]`: what ray `i` of `rays[d]` did.
+    pub nodes: Vec<Vec<Node>>,
+    /// Per sample: rays traced so far, shadow rays included.
+    pub sample_rays: Vec<u32>,
+}
+
+impl Waves {
+    /// Start a row: `samples` samples, none traced yet.
+    pub fn start(&mut self, samples: usize, max_depth: u32) {
+        let depths = max_depth as usize;
+        if self.rays.len() < depths {
+            self.rays.resize_with(depths, Rays::default);
+            self.nodes.resize_with(depths, Vec::new);
+        }
+        for (rays, nodes) in self.rays.iter_mut().zip(&mut self.nodes) {
+            rays.clear();
+            nodes.clear();
+        }
+        self.sample_rays.clear();
+        self.sample_rays.resize(samples, 0);
+    }
+
+    /// Whether a sample's tree grew to [`RAY_BUDGET`] rays. The scalar
+    /// tracer cuts such a tree short at a point that depends on its
+    /// depth-first order, so these samples are traced again by it.
+    pub fn over_budget(&self, sample: usize) -> bool {
+        self.sample_rays[sample] >= RAY_BUDGET
+    }
+
+    // ANCHOR: waves
+    /// Trace every wave of the row, from the primary rays in `rays[0]`
+    /// down to `max_depth` or until a wave is empty.
+    pub fn trace(&mut self, setup: &Setup) {
+        for depth in 1..=setup.max_depth as usize {
+            if self.rays[depth - 1].is_empty() {
+                break;
+            }
+            self.trace_wave(setup, depth);
+        }
+    }
+    // ANCHOR_END: waves
+
+    /// Trace the wave of rays at `depth`, and pack the rays they send on
+    /// densely into the next wave.
+    fn trace_wave(&mut self, setup: &Setup, depth: usize) {
+        let can_send = depth < setup.max_depth as usize;
+        let (this, rest) = self.rays.split_at_mut(depth);
+        let rays = &mut this[depth - 1];
+        let mut empty = Rays::default();
+        let next = rest.first_mut().unwrap_or(&mut empty);
+        let nodes = &mut self.nodes[depth - 1];
+        rays.pad();
+        for group in 0..rays.groups() {
+            let shaded = shade_group(setup, rays, group, can_send);
+            let lanes = (rays.len() - group * LANES).min(LANES);
+            for lane in 0..lanes {
+                let i = group * LANES + lane;
+                let sample = rays.sample[i];
+                let hit = shaded.hit.as_array_ref()[lane] != 0.0;
+                let shadow = hit && setup.features.shadows;
+                let counted = &mut self.sample_rays[sample as usize];
+                *counted += 1 + u32::from(shadow);
+                let mut node = Node {
+                    added: shaded.added.lane(lane),
+                    first_child: next.len() as u32,
+                    children: 0,
+                    kind: rays.kind[i],
+                    shadow,
+                };
+                if *counted < RAY_BUDGET {
+                    node.children = pack_children(&shaded, lane, sample, next);
+                }
+                nodes.push(node);
+            }
+        }
+    }
+}
+
+// ANCHOR: pack
+/// Append lane `lane`'s transmitted and reflected rays to the next wave,
+/// in the order the scalar ray stack pops them; returns how many.
+fn pack_children(shaded: &Shaded, lane: usize, sample: u32, next: &mut Rays) -> u8 {
+    let set = |mask: f32x8| mask.as_array_ref()[lane] != 0.0;
+    let mut children = 0;
+    if let Some((from, direction, total)) = &shaded.transmitted
+        && set(shaded.transmits)
+    {
+        let kind = if set(*total) {
+            RayKind::TotalInternalReflection
+        } else {
+            RayKind::Refraction
+        };
+        let weight = shaded.transmission.as_array_ref()[lane];
+        next.push(from.lane(lane), direction.lane(lane), weight, sample, kind);
+        children += 1;
+    }
+    if let Some((from, direction)) = &shaded.reflected
+        && set(shaded.reflects)
+    {
+        let weight = shaded.reflection.as_array_ref()[lane];
+        let kind = RayKind::Reflection;
+        next.push(from.lane(lane), direction.lane(lane), weight, sample, kind);
+        children += 1;
+    }
+    children
+}
+// ANCHOR_END: pack
