@@ -6,6 +6,8 @@
 //! records which lanes' answers count. `blend` then keeps, lane by lane,
 //! the new answer where the mask is set and the old one elsewhere.
 
+use std::f32::consts::PI;
+
 use raylab::{Scene, Vec3};
 use wide::{CmpEq, CmpGe, CmpGt, CmpLt, CmpNe, f32x8};
 
@@ -22,6 +24,8 @@ struct SphereX8 {
     centre: Vec3x8,
     radius_squared: f32x8,
     albedo: Vec3x8,
+    /// `albedo / π`, divided once here as the scalar code divides it per hit.
+    albedo_over_pi: Vec3x8,
     reflection: f32x8,
     transmission: f32x8,
     ior: f32x8,
@@ -32,8 +36,9 @@ struct SphereX8 {
 pub struct SceneX8 {
     plane_point: Vec3x8,
     plane_normal: Vec3,
-    checker_even: Vec3x8,
-    checker_odd: Vec3x8,
+    /// The checker's colours, and each divided by π.
+    checker_even: (Vec3x8, Vec3x8),
+    checker_odd: (Vec3x8, Vec3x8),
     spheres: Vec<SphereX8>,
 }
 
@@ -56,6 +61,7 @@ pub struct Surfaces {
     /// Set where the ray arrives from outside (`dot(d, n) < 0`).
     pub entering: f32x8,
     pub albedo: Vec3x8,
+    pub albedo_over_pi: Vec3x8,
     /// The shares the chapter's features let through (0 when switched off).
     pub reflection: f32x8,
     pub transmission: f32x8,
@@ -76,6 +82,7 @@ impl SceneX8 {
                     centre: Vec3x8::splat(s.shape.centre),
                     radius_squared: f32x8::splat(s.shape.radius * s.shape.radius),
                     albedo: Vec3x8::splat(m.albedo()),
+                    albedo_over_pi: Vec3x8::splat(m.albedo() / PI),
                     reflection: f32x8::splat(on(features.reflection, m.reflection())),
                     transmission: f32x8::splat(on(features.transmission, m.transmission())),
                     ior: f32x8::splat(m.ior()),
@@ -85,8 +92,8 @@ impl SceneX8 {
         SceneX8 {
             plane_point: Vec3x8::splat(scene.ground.plane.point),
             plane_normal: scene.ground.plane.normal,
-            checker_even: Vec3x8::splat(scene.ground.checker.even),
-            checker_odd: Vec3x8::splat(scene.ground.checker.odd),
+            checker_even: with_over_pi(scene.ground.checker.even),
+            checker_odd: with_over_pi(scene.ground.checker.odd),
             spheres,
         }
     }
@@ -112,6 +119,12 @@ impl SceneX8 {
         let b = oc.dot(d);
         let q = oc.dot(oc) - s.radius_squared;
         let disc = b * b - q;
+        let meets = !disc.cmp_lt(f32x8::ZERO);
+        // Divergence: most spheres are missed by all eight rays of a
+        // group, and then the square root (the slow part) is skipped.
+        if meets.none() {
+            return (f32x8::ZERO, meets);
+        }
         // A lane whose line misses the sphere takes the square root of a
         // negative number (NaN); its mask is clear, so nothing reads it.
         let root = disc.sqrt();
@@ -122,7 +135,7 @@ impl SceneX8 {
         // where the origin is inside the sphere (t0 ≤ 0), the exit t1.
         let front = t0.cmp_gt(f32x8::ZERO);
         let t = front.blend(t0, t1);
-        let hit = !disc.cmp_lt(f32x8::ZERO) & (front | t1.cmp_gt(f32x8::ZERO));
+        let hit = meets & (front | t1.cmp_gt(f32x8::ZERO));
         (t, hit)
     }
     // ANCHOR_END: sphere
@@ -151,6 +164,9 @@ impl SceneX8 {
     pub fn any(&self, o: Vec3x8, d: Vec3x8) -> f32x8 {
         let mut blocked = self.plane(o, d).1;
         for sphere in &self.spheres {
+            if blocked.all() {
+                break; // every lane is in shadow already
+            }
             blocked |= SceneX8::sphere(sphere, o, d).1;
         }
         blocked
@@ -162,7 +178,7 @@ impl SceneX8 {
         let point = o + d.scale(hits.t);
         let on_ground = hits.object.cmp_eq(f32x8::splat(GROUND));
         let mut centre = Vec3x8::splat(Vec3::ZERO);
-        let mut albedo = self.checker(point);
+        let (mut albedo, mut albedo_over_pi) = self.checker(point);
         let (mut reflection, mut transmission, mut ior) = (f32x8::ZERO, f32x8::ZERO, f32x8::ONE);
         // Each lane picks its own sphere's numbers: one blend per sphere,
         // where a scalar tracer would index an array.
@@ -170,6 +186,7 @@ impl SceneX8 {
             let mine = hits.object.cmp_eq(f32x8::splat(k as f32 + 1.0));
             centre = Vec3x8::select(mine, s.centre, centre);
             albedo = Vec3x8::select(mine, s.albedo, albedo);
+            albedo_over_pi = Vec3x8::select(mine, s.albedo_over_pi, albedo_over_pi);
             reflection = mine.blend(s.reflection, reflection);
             transmission = mine.blend(s.transmission, transmission);
             ior = mine.blend(s.ior, ior);
@@ -184,6 +201,7 @@ impl SceneX8 {
             facing_normal,
             entering,
             albedo,
+            albedo_over_pi,
             reflection,
             transmission,
             ior,
@@ -192,8 +210,9 @@ impl SceneX8 {
 
     // ANCHOR: checker
     /// The ground's checker colour at eight points, as `Checker::albedo_at`
-    /// decides it: the parity of `floor(x) + floor(z)` as an `i64`.
-    fn checker(&self, p: Vec3x8) -> Vec3x8 {
+    /// decides it: the parity of `floor(x) + floor(z)` as an `i64`. With
+    /// it, the colour divided by π.
+    fn checker(&self, p: Vec3x8) -> (Vec3x8, Vec3x8) {
         let s = p.x.floor() + p.z.floor();
         // `s` is a whole number. Below 2^24 halving it is exact, and it is
         // odd where the half is not whole; above, every f32 is even. Two
@@ -203,9 +222,17 @@ impl SceneX8 {
         let not_nan = s.cmp_eq(s);
         let saturated = s.cmp_ge(f32x8::splat(9.223_372e18));
         let odd = (half.floor().cmp_ne(half) & not_nan) | saturated;
-        Vec3x8::select(odd, self.checker_odd, self.checker_even)
+        let (even, odd_colour) = (self.checker_even, self.checker_odd);
+        (
+            Vec3x8::select(odd, odd_colour.0, even.0),
+            Vec3x8::select(odd, odd_colour.1, even.1),
+        )
     }
     // ANCHOR_END: checker
+}
+
+fn with_over_pi(colour: Vec3) -> (Vec3x8, Vec3x8) {
+    (Vec3x8::splat(colour), Vec3x8::splat(colour / PI))
 }
 
 /// Which lanes of eight rays send on a reflected and a transmitted ray.
@@ -309,7 +336,7 @@ mod tests {
             y: f32x8::ZERO,
             z: f32x8::splat(0.25),
         };
-        let albedo = wide.checker(p);
+        let (albedo, _) = wide.checker(p);
         for (lane, &x) in xs.iter().enumerate() {
             let expected = scene.ground.checker.albedo_at(Vec3::new(x, 0.0, 0.25));
             assert_eq!(albedo.lane(lane), expected, "x = {x}");

@@ -7,6 +7,7 @@
 //! and makes the same image to the byte:
 //!
 //! - [`soa`]: eight rays side by side, one array per number;
+//! - [`camera`]: a row's primary rays, eight at a time;
 //! - [`intersect`]: eight rays against the ground and every sphere, masks
 //!   instead of branches;
 //! - [`shade`]: the lab's shading and optics, lane by lane;
@@ -17,6 +18,7 @@
 //!
 //! With `--like chNN-…` ([`like`]) it traces as any of chapters 1–5.
 
+pub mod camera;
 pub mod intersect;
 pub mod like;
 pub mod render;

@@ -10,6 +10,7 @@ use raylab::{Camera, RayKind, Rendered, Scene, Settings, Tracer, Vec3};
 use rayon::prelude::*;
 
 use crate::EightRays;
+use crate::camera::primary_rays;
 use crate::intersect::SceneX8;
 use crate::shade::Light;
 use crate::wave::{Node, Setup, Waves};
@@ -33,25 +34,42 @@ struct Sum {
 // ANCHOR: sum
 /// Add up the tree under `nodes[depth][index]` in the order the scalar ray
 /// stack pops it: a ray's own light first, then its children's subtrees.
-fn sum_tree(
-    nodes: &[Vec<Node>],
-    depth: usize,
-    index: usize,
-    sum: &mut Sum,
-    counts: &mut RayCounts,
-) {
-    let node = nodes[depth][index];
-    sum.colour += node.added;
-    sum.deepest = sum.deepest.max(depth as u32 + 1);
-    sum.rays += 1 + u32::from(node.shadow);
+fn sum_tree(nodes: &[Vec<Node>], depth: usize, index: usize, sum: &mut Sum) {
+    let node = &nodes[depth][index];
+    sum.add(node, depth);
+    let first = node.first_child as usize;
+    for child in first..first + usize::from(node.children) {
+        let leaf = &nodes[depth + 1][child];
+        // Most rays send nothing on: add those here, without a call.
+        if leaf.children == 0 {
+            sum.add(leaf, depth + 1);
+        } else {
+            sum_tree(nodes, depth + 1, child, sum);
+        }
+    }
+}
+
+impl Sum {
+    /// Add one ray of depth `depth + 1`: its light, its depth, its rays.
+    fn add(&mut self, node: &Node, depth: usize) {
+        self.colour += node.added;
+        self.deepest = self.deepest.max(depth as u32 + 1);
+        self.rays += 1 + u32::from(node.shadow);
+    }
+}
+// ANCHOR_END: sum
+
+/// The rays of a tree by kind, to take a tree's wave-traced part back out
+/// of the counts when the scalar tracer traces that sample again.
+fn count_tree(nodes: &[Vec<Node>], depth: usize, index: usize, counts: &mut RayCounts) {
+    let node = &nodes[depth][index];
     counts.0[node.kind.index()] += 1;
     counts.0[RayKind::Shadow.index()] += u64::from(node.shadow);
     let first = node.first_child as usize;
     for child in first..first + usize::from(node.children) {
-        sum_tree(nodes, depth + 1, child, sum, counts);
+        count_tree(nodes, depth + 1, child, counts);
     }
 }
-// ANCHOR_END: sum
 
 /// One worker's tools: its waves, and a scalar tracer for the rare sample
 /// whose tree reaches the ray budget.
@@ -143,16 +161,13 @@ fn render_row(
     let (w, h) = (settings.width, settings.height);
     let waves = &mut worker.waves;
     waves.start(w as usize * offsets.len(), settings.max_depth);
-    for i in 0..w {
-        for &offset in offsets {
-            let ray = camera.ray(i, j, offset, w, h);
-            let sample = waves.rays[0].len() as u32;
-            waves.rays[0].push(ray.origin, ray.direction, 1.0, sample, RayKind::Primary);
-        }
-    }
+    primary_rays(camera, j, settings, &mut waves.rays[0]);
     waves.trace(setup);
 
-    let mut tally = Tally::default();
+    let mut tally = Tally {
+        counts: waves.counts,
+        ..Tally::default()
+    };
     let pixels = colour_row.iter_mut().zip(deepest_row).zip(rays_row);
     for (i, ((colour, deepest), rays)) in pixels.enumerate() {
         let mut sum = Vec3::ZERO;
@@ -161,6 +176,9 @@ fn render_row(
             let sample = i * offsets.len() + k;
             let mut traced = Sum::default();
             if waves.over_budget(sample) {
+                let mut waved = RayCounts::default();
+                count_tree(&waves.nodes, 0, sample, &mut waved);
+                tally.counts = tally.counts - waved;
                 let before = worker.scalar.counts();
                 let ray = camera.ray(i as u32, j, offset, w, h);
                 let scalar = worker.scalar.trace(ray);
@@ -169,7 +187,7 @@ fn render_row(
                 (traced.colour, traced.deepest, traced.rays) =
                     (scalar.colour, scalar.deepest, scalar.rays);
             } else {
-                sum_tree(&waves.nodes, 0, sample, &mut traced, &mut tally.counts);
+                sum_tree(&waves.nodes, 0, sample, &mut traced);
             }
             sum += traced.colour;
             pixel.deepest = pixel.deepest.max(traced.deepest);

@@ -2,8 +2,6 @@
 //! 1–4, in the same order of operations, so that every lane rounds as the
 //! scalar code does.
 
-use std::f32::consts::PI;
-
 use ch01_ray_cast::{AMBIENT, SUN_LIT};
 use ch02_shadows::SUN_IN_SHADOW;
 use raylab::Scene;
@@ -52,11 +50,15 @@ impl Light {
         // argument when the second is NaN, and `f32::max(NaN, 0)` is 0.
         let cos = f32x8::ZERO.max(s.facing_normal.dot(self.to_sun));
         let irradiance = in_shadow.blend(self.shadowed, self.lit) * cos;
-        let lambert = |a: f32x8| a / f32x8::splat(PI) * irradiance + a * f32x8::splat(AMBIENT);
+        // `albedo / π · irradiance + albedo · ambient`, with `albedo / π`
+        // divided once per material (the same division, the same result).
+        let lambert =
+            |a: f32x8, a_over_pi: f32x8| a_over_pi * irradiance + a * f32x8::splat(AMBIENT);
+        let (a, a_pi) = (s.albedo, s.albedo_over_pi);
         Vec3x8 {
-            x: lambert(s.albedo.x),
-            y: lambert(s.albedo.y),
-            z: lambert(s.albedo.z),
+            x: lambert(a.x, a_pi.x),
+            y: lambert(a.y, a_pi.y),
+            z: lambert(a.z, a_pi.z),
         }
     }
     // ANCHOR_END: local

@@ -161,6 +161,7 @@ impl Rays {
         ]
     }
 
+    #[inline]
     pub fn push(&mut self, origin: Vec3, direction: Vec3, weight: f32, sample: u32, kind: RayKind) {
         self.ox.push(origin.x);
         self.oy.push(origin.y);
@@ -172,6 +173,42 @@ impl Rays {
         self.sample.push(sample);
         self.kind.push(kind);
         self.len += 1;
+    }
+
+    /// Make room for `more` rays, so that pushing them never reallocates.
+    pub fn reserve(&mut self, more: usize) {
+        for numbers in self.numbers_mut() {
+            numbers.reserve(more);
+        }
+        self.sample.reserve(more);
+        self.kind.reserve(more);
+    }
+
+    /// Append the first `count` lanes of eight rays of one kind.
+    pub fn push_lanes(
+        &mut self,
+        origins: Vec3x8,
+        directions: Vec3x8,
+        weights: f32x8,
+        samples: &[u32],
+        kind: RayKind,
+    ) {
+        let count = samples.len();
+        let numbers = [
+            origins.x,
+            origins.y,
+            origins.z,
+            directions.x,
+            directions.y,
+            directions.z,
+            weights,
+        ];
+        for (to, from) in self.numbers_mut().into_iter().zip(numbers) {
+            to.extend_from_slice(&from.as_array_ref()[..count]);
+        }
+        self.sample.extend_from_slice(samples);
+        self.kind.extend(std::iter::repeat_n(kind, count));
+        self.len += count;
     }
 
     /// The real rays (without the padding).

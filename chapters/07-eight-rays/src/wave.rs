@@ -8,7 +8,7 @@
 //! colour is then summed by walking its tree in the scalar tracer's order,
 //! so the sums round exactly as chapter 5's do.
 
-use raylab::trace::RAY_BUDGET;
+use raylab::trace::{RAY_BUDGET, RayCounts};
 use raylab::{RayKind, Vec3};
 use wide::f32x8;
 
@@ -127,8 +127,19 @@ pub struct Waves {
     pub rays: Vec<Rays>,
     /// `nodes[d][i]`: what ray `i` of `rays[d]` did.
     pub nodes: Vec<Vec<Node>>,
-    /// Per sample: rays traced so far, shadow rays included.
+    /// Per sample: rays traced so far, shadow rays included; kept only
+    /// when a tree can reach the budget at all (see [`budget_matters`]).
     pub sample_rays: Vec<u32>,
+    /// The row's rays by kind, counted a group at a time.
+    pub counts: RayCounts,
+}
+
+/// Whether any sample's tree can reach [`RAY_BUDGET`]: a ray sends on at
+/// most two rays and casts one shadow ray, so a tree `max_depth` deep
+/// holds at most `2 · (2^max_depth − 1)` rays: 4094 at depth 11, below
+/// the budget of 4096. Only deeper renders need to count every sample's.
+pub fn budget_matters(max_depth: u32) -> bool {
+    2 * ((1u64 << max_depth.min(63)) - 1) >= u64::from(RAY_BUDGET)
 }
 
 impl Waves {
@@ -144,14 +155,19 @@ impl Waves {
             nodes.clear();
         }
         self.sample_rays.clear();
-        self.sample_rays.resize(samples, 0);
+        if budget_matters(max_depth) {
+            self.sample_rays.resize(samples, 0);
+        }
+        self.counts = RayCounts::default();
     }
 
     /// Whether a sample's tree grew to [`RAY_BUDGET`] rays. The scalar
     /// tracer cuts such a tree short at a point that depends on its
     /// depth-first order, so these samples are traced again by it.
     pub fn over_budget(&self, sample: usize) -> bool {
-        self.sample_rays[sample] >= RAY_BUDGET
+        self.sample_rays
+            .get(sample)
+            .is_some_and(|&rays| rays >= RAY_BUDGET)
     }
 
     // ANCHOR: waves
@@ -177,42 +193,73 @@ impl Waves {
         let next = rest.first_mut().unwrap_or(&mut empty);
         let nodes = &mut self.nodes[depth - 1];
         rays.pad();
+        next.reserve(2 * rays.len());
+        let counting = !self.sample_rays.is_empty();
+        let mut shadows = 0;
         for group in 0..rays.groups() {
             let shaded = shade_group(setup, rays, group, can_send);
             let lanes = (rays.len() - group * LANES).min(LANES);
+            // The masks as bits, and the light as plain arrays: one lane at
+            // a time from here on.
+            let real = (1 << lanes) - 1;
+            let hit = shaded.hit.move_mask() & real;
+            let sends = (shaded.reflects | shaded.transmits).move_mask() & real;
+            let bits = Bits {
+                reflects: shaded.reflects.move_mask(),
+                transmits: shaded.transmits.move_mask(),
+                total: shaded.transmitted.map_or(0, |t| t.2.move_mask()),
+            };
+            if setup.features.shadows {
+                shadows += hit.count_ones();
+            }
+            let added = [shaded.added.x, shaded.added.y, shaded.added.z].map(|c| c.to_array());
             for lane in 0..lanes {
                 let i = group * LANES + lane;
                 let sample = rays.sample[i];
-                let hit = shaded.hit.as_array_ref()[lane] != 0.0;
-                let shadow = hit && setup.features.shadows;
-                let counted = &mut self.sample_rays[sample as usize];
-                *counted += 1 + u32::from(shadow);
+                let shadow = setup.features.shadows && hit & (1 << lane) != 0;
                 let mut node = Node {
-                    added: shaded.added.lane(lane),
+                    added: Vec3::new(added[0][lane], added[1][lane], added[2][lane]),
                     first_child: next.len() as u32,
                     children: 0,
                     kind: rays.kind[i],
                     shadow,
                 };
-                if *counted < RAY_BUDGET {
-                    node.children = pack_children(&shaded, lane, sample, next);
+                let mut within_budget = true;
+                if counting {
+                    let counted = &mut self.sample_rays[sample as usize];
+                    *counted += 1 + u32::from(shadow);
+                    within_budget = *counted < RAY_BUDGET;
+                }
+                if can_send && sends & (1 << lane) != 0 && within_budget {
+                    node.children = pack_children(&shaded, &bits, lane, sample, next);
                 }
                 nodes.push(node);
             }
+        }
+        self.counts.0[RayKind::Shadow.index()] += u64::from(shadows);
+        for kind in &rays.kind[..rays.len()] {
+            self.counts.0[kind.index()] += 1;
         }
     }
 }
 
 // ANCHOR: pack
+/// A group's masks as bits, lane `k` in bit `k`.
+struct Bits {
+    reflects: i32,
+    transmits: i32,
+    total: i32,
+}
+
 /// Append lane `lane`'s transmitted and reflected rays to the next wave,
 /// in the order the scalar ray stack pops them; returns how many.
-fn pack_children(shaded: &Shaded, lane: usize, sample: u32, next: &mut Rays) -> u8 {
-    let set = |mask: f32x8| mask.as_array_ref()[lane] != 0.0;
+fn pack_children(shaded: &Shaded, bits: &Bits, lane: usize, sample: u32, next: &mut Rays) -> u8 {
+    let set = |mask: i32| mask & (1 << lane) != 0;
     let mut children = 0;
-    if let Some((from, direction, total)) = &shaded.transmitted
-        && set(shaded.transmits)
+    if let Some((from, direction, _)) = &shaded.transmitted
+        && set(bits.transmits)
     {
-        let kind = if set(*total) {
+        let kind = if set(bits.total) {
             RayKind::TotalInternalReflection
         } else {
             RayKind::Refraction
@@ -222,7 +269,7 @@ fn pack_children(shaded: &Shaded, lane: usize, sample: u32, next: &mut Rays) -> 
         children += 1;
     }
     if let Some((from, direction)) = &shaded.reflected
-        && set(shaded.reflects)
+        && set(bits.reflects)
     {
         let weight = shaded.reflection.as_array_ref()[lane];
         let kind = RayKind::Reflection;
