@@ -85,7 +85,7 @@ impl EncodeTable {
     pub fn encode(&self, c: f32) -> u8 {
         // NaN, negatives and zero are black; 1 and above are white, as the
         // clamp in `encode_channel` makes them.
-        if !(c > 0.0) {
+        if c.is_nan() || c <= 0.0 {
             return 0;
         }
         if c >= 1.0 {

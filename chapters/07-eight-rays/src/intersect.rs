@@ -194,7 +194,7 @@ impl SceneX8 {
         let sphere_normal = (point - centre).normalize();
         let normal = Vec3x8::select(on_ground, Vec3x8::splat(self.plane_normal), sphere_normal);
         let entering = d.dot(normal).cmp_lt(f32x8::ZERO);
-        let facing_normal = Vec3x8::select(entering, normal, normal.neg());
+        let facing_normal = Vec3x8::select(entering, normal, -normal);
         Surfaces {
             point,
             normal,

@@ -7,7 +7,7 @@
 //! array per number (a *structure of arrays*), and eight consecutive
 //! entries load straight into one `f32x8`.
 
-use std::ops::{Add, Sub};
+use std::ops::{Add, Neg, Sub};
 
 use raylab::{RayKind, Vec3};
 use wide::f32x8;
@@ -62,16 +62,6 @@ impl Vec3x8 {
         }
     }
 
-    /// `-v` in every lane: the sign bit flipped, as `-v` does in scalar
-    /// code (`wide`'s own negation is `0 − v`, which turns −0 into +0).
-    pub fn neg(self) -> Vec3x8 {
-        Vec3x8 {
-            x: negate(self.x),
-            y: negate(self.y),
-            z: negate(self.z),
-        }
-    }
-
     /// Lane by lane, `a` where `mask` is set and `b` elsewhere.
     pub fn select(mask: f32x8, a: Vec3x8, b: Vec3x8) -> Vec3x8 {
         Vec3x8 {
@@ -94,6 +84,19 @@ impl Vec3x8 {
 /// `-x`, exactly: only the sign bit changes.
 pub fn negate(x: f32x8) -> f32x8 {
     x ^ f32x8::splat(-0.0)
+}
+
+/// `-v` in every lane: the sign bit flipped, as `-v` does in scalar code
+/// (`wide`'s own negation is `0 − v`, which turns −0 into +0).
+impl Neg for Vec3x8 {
+    type Output = Vec3x8;
+    fn neg(self) -> Vec3x8 {
+        Vec3x8 {
+            x: negate(self.x),
+            y: negate(self.y),
+            z: negate(self.z),
+        }
+    }
 }
 
 impl Add for Vec3x8 {

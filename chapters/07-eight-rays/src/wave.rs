@@ -185,6 +185,8 @@ impl Waves {
 
     /// Trace the wave of rays at `depth`, and pack the rays they send on
     /// densely into the next wave.
+    // One lane number indexes the wave, the light and the masks at once.
+    #[allow(clippy::needless_range_loop)]
     fn trace_wave(&mut self, setup: &Setup, depth: usize) {
         let can_send = depth < setup.max_depth as usize;
         let (this, rest) = self.rays.split_at_mut(depth);
