@@ -87,6 +87,21 @@ impl Camera {
         self.forward
     }
 
+    /// The unit vector to the right of the image.
+    pub fn right(&self) -> Vec3 {
+        self.right
+    }
+
+    /// The unit vector to the top of the image.
+    pub fn up(&self) -> Vec3 {
+        self.up
+    }
+
+    /// `tan(fov / 2)`, as [`Camera::ray`] uses it.
+    pub fn half_height(&self) -> f32 {
+        self.half_height
+    }
+
     /// The screen point `(x, y)` in pixels where the world point `p` is
     /// seen, or `None` when it lies behind the camera. The inverse of
     /// [`Camera::ray`], used to find a sphere's pixel for a probe.

@@ -3,7 +3,9 @@
 use image::RgbImage;
 
 use crate::Vec3;
-use crate::srgb::encode_channel;
+use rayon::prelude::*;
+
+use crate::srgb::EncodeTable;
 
 /// A `width` × `height` grid of linear RGB colours, row 0 at the top.
 #[derive(Clone, Debug, PartialEq)]
@@ -57,13 +59,21 @@ impl LinearImage {
         self.pixels.iter().all(|p| p.is_finite())
     }
 
-    /// Encode for display: clamp, sRGB, round to 8 bits (LAB.md).
+    /// Encode for display: clamp, sRGB, round to 8 bits (LAB.md), with
+    /// [`EncodeTable`] (the same bytes as `encode_channel`, without a
+    /// `powf` per channel), rows shared out over every core.
     pub fn to_srgb8(&self) -> RgbImage {
-        let bytes = self
-            .pixels
-            .iter()
-            .flat_map(|p| p.to_array().map(encode_channel))
-            .collect();
+        let table = EncodeTable::get();
+        let mut bytes = vec![0u8; self.pixels.len() * 3];
+        let row = self.width.max(1) as usize;
+        bytes
+            .par_chunks_mut(row * 3)
+            .zip(self.pixels.par_chunks(row))
+            .for_each(|(out, pixels)| {
+                for (rgb, p) in out.chunks_exact_mut(3).zip(pixels) {
+                    rgb.copy_from_slice(&p.to_array().map(|c| table.encode(c)));
+                }
+            });
         RgbImage::from_raw(self.width, self.height, bytes).expect("3 bytes per pixel")
     }
 }
@@ -78,5 +88,19 @@ mod tests {
         let rgb = image.to_srgb8();
         assert_eq!(rgb.get_pixel(0, 0).0, [255, 0, 188]);
         assert_eq!(rgb.get_pixel(1, 0).0, [255, 255, 255]);
+    }
+
+    #[test]
+    fn the_encoded_image_is_encode_channel_of_every_channel() {
+        use crate::srgb::encode_channel;
+        let pixels: Vec<Vec3> = (0..300)
+            .map(|i| Vec3::new(i as f32 / 299.0, (i as f32 * 0.37).sin(), 1e-3 * i as f32))
+            .collect();
+        let image = LinearImage::from_pixels(20, 15, pixels.clone());
+        let bytes: Vec<u8> = pixels
+            .iter()
+            .flat_map(|p| p.to_array().map(encode_channel))
+            .collect();
+        assert_eq!(image.to_srgb8().into_raw(), bytes);
     }
 }

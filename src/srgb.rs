@@ -28,9 +28,139 @@ pub fn quantise(v: f32) -> u8 {
 }
 // ANCHOR_END: encode
 
+// ANCHOR: table
+/// [`encode_channel`] without a `powf` per channel: a table that gives the
+/// same byte for every `f32`, made once from `encode_channel` itself.
+///
+/// The encoding only ever goes up as `c` does, so it is fixed by the 255
+/// *thresholds*, the smallest `c` that encodes to each level 1 to 255. A
+/// second table, indexed by the top 16 bits of `c` (its exponent and 7
+/// bits of mantissa, so 128 slots per octave), gives the level at the
+/// bottom of each slot; at most a threshold or two lie inside a slot, and
+/// a comparison or two finds the byte.
+pub struct EncodeTable {
+    /// `thresholds[v]`: the smallest `c` that encodes to `v`; level 256,
+    /// which no `c` reaches, is infinitely far.
+    thresholds: [f32; 257],
+    slots: Vec<u8>,
+}
+
+/// The slot of a `c` in (0, 1): its top 16 bits.
+fn slot(c: f32) -> usize {
+    (c.to_bits() >> 16) as usize
+}
+
+impl EncodeTable {
+    fn new() -> Self {
+        let mut thresholds = [f32::INFINITY; 257];
+        thresholds[0] = 0.0;
+        for (level, threshold) in thresholds.iter_mut().enumerate().take(256).skip(1) {
+            // The smallest f32 in [0, 1] that encodes to `level` or more:
+            // a binary search over the bits, which order positive floats.
+            let (mut lo, mut hi) = (0u32, 1.0f32.to_bits());
+            while lo < hi {
+                let mid = lo + (hi - lo) / 2;
+                if encode_channel(f32::from_bits(mid)) >= level as u8 {
+                    hi = mid;
+                } else {
+                    lo = mid + 1;
+                }
+            }
+            *threshold = f32::from_bits(lo);
+        }
+        let slots = (0..=slot(1.0))
+            .map(|s| encode_channel(f32::from_bits((s as u32) << 16)))
+            .collect();
+        EncodeTable { thresholds, slots }
+    }
+
+    /// The table, made the first time it is asked for (about 25,000 calls
+    /// of `encode_channel`).
+    pub fn get() -> &'static EncodeTable {
+        static TABLE: std::sync::LazyLock<EncodeTable> = std::sync::LazyLock::new(EncodeTable::new);
+        &TABLE
+    }
+
+    /// The same byte as [`encode_channel`], for every `f32`.
+    pub fn encode(&self, c: f32) -> u8 {
+        // NaN, negatives and zero are black; 1 and above are white, as the
+        // clamp in `encode_channel` makes them.
+        if c.is_nan() || c <= 0.0 {
+            return 0;
+        }
+        if c >= 1.0 {
+            return 255;
+        }
+        let mut level = self.slots[slot(c)];
+        while c >= self.thresholds[usize::from(level) + 1] {
+            level += 1;
+        }
+        level
+    }
+}
+// ANCHOR_END: table
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_table_encodes_a_million_spread_values_as_encode_channel_does() {
+        // Every 1021st f32 in [0, 1] (a prime stride, so that every slot
+        // and every mantissa pattern is visited), and each threshold with
+        // its neighbours. `encode_table_matches_for_every_f32` checks all.
+        let table = EncodeTable::get();
+        for bits in (0..=1.0f32.to_bits()).step_by(1021) {
+            let c = f32::from_bits(bits);
+            assert_eq!(table.encode(c), encode_channel(c), "{c:e}");
+        }
+        for &t in &table.thresholds[1..256] {
+            for c in [
+                f32::from_bits(t.to_bits() - 1),
+                t,
+                f32::from_bits(t.to_bits() + 1),
+            ] {
+                assert_eq!(table.encode(c), encode_channel(c), "{c:e}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_table_clamps_nan_infinities_negatives_and_values_above_one() {
+        let table = EncodeTable::get();
+        for c in [
+            f32::NAN,
+            -f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            -0.0,
+            -1e-30,
+            -0.5,
+            1.0,
+            1.000_001,
+            7.5,
+            f32::MAX,
+            f32::MIN_POSITIVE,
+            1e-45,
+        ] {
+            assert_eq!(table.encode(c), encode_channel(c), "{c:e}");
+        }
+    }
+
+    /// All 1,065,353,217 f32 values in [0, 1]: about a minute in a release
+    /// build. `cargo test --release -p raylab --lib -- --ignored encode_table`
+    #[test]
+    #[ignore = "exhaustive: run in release with --ignored"]
+    fn encode_table_matches_for_every_f32_in_zero_to_one() {
+        let table = EncodeTable::get();
+        let wrong = (0..=1.0f32.to_bits())
+            .filter(|&bits| {
+                let c = f32::from_bits(bits);
+                table.encode(c) != encode_channel(c)
+            })
+            .count();
+        assert_eq!(wrong, 0);
+    }
 
     #[test]
     fn black_and_white_stay_black_and_white() {

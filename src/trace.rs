@@ -1,8 +1,12 @@
 //! The tracer: the ray-stack loop of LAB.md, and the seam where a chapter
 //! plugs in what happens when a ray hits something.
 
+use indicatif::ProgressBar;
+
 use crate::Vec3;
+use crate::camera::Camera;
 use crate::ray::{Ray, RayKind};
+use crate::render::{Rendered, Settings};
 use crate::scene::{Hit, Object, Scene};
 use crate::stack::{MAX_DEPTH_LIMIT, MAX_SECONDARIES, PendingRay, RayStack};
 
@@ -17,6 +21,20 @@ use crate::stack::{MAX_DEPTH_LIMIT, MAX_SECONDARIES, PendingRay, RayStack};
 /// is left, and pushes the rays sent on while the depth allows.
 pub trait Step: Sync {
     fn shade(&self, ray: &Ray, hit: &Hit, surface: &mut Surface) -> Vec3;
+
+    /// How a program renders its whole image with this step: by default
+    /// one ray at a time, with [`render`](crate::render::render). Chapter 7
+    /// overrides it to trace eight rays at a time, to the same bytes; the
+    /// probe and the depth sweep always use `shade`.
+    fn render_image(
+        &self,
+        scene: &Scene,
+        camera: &Camera,
+        settings: &Settings,
+        progress: &ProgressBar,
+    ) -> Rendered {
+        crate::render::render(scene, camera, self, settings, progress)
+    }
 }
 // ANCHOR_END: step
 

@@ -27,7 +27,7 @@ use crate::probe_text::Listing;
 use crate::scene_file::SceneFileError;
 use raylab::camera::Camera;
 use raylab::probe::{self, ProbeTarget};
-use raylab::render::{Rendered, Settings, render, render_every_depth};
+use raylab::render::{Rendered, Settings, render_every_depth};
 use raylab::sampling::SamplePattern;
 use raylab::scene::Scene;
 use raylab::stack::MAX_DEPTH_LIMIT;
@@ -309,7 +309,9 @@ pub fn run<S: Step>(chapter: &Chapter<S>, options: &Options) -> Result<Report, C
     prepare_out_dir(&out_dir)?;
 
     let progress = progress_bar(u64::from(settings.height), options.quiet);
-    let rendered = render(&scene, &camera, &chapter.step, &settings, &progress);
+    let rendered = chapter
+        .step
+        .render_image(&scene, &camera, &settings, &progress);
     progress.finish_and_clear();
 
     let render_png = out_dir.join("render.png");
@@ -491,7 +493,16 @@ fn usage_line(error: &clap::Error) -> String {
 /// A chapter program's whole `main`: parse, render, write, report.
 /// Bad input gives one line on stderr and exit code 2.
 pub fn main<S: Step>(chapter: &Chapter<S>) -> ExitCode {
-    let result = Options::parse_for(chapter, std::env::args_os())
+    main_with_args(chapter, std::env::args_os())
+}
+
+/// [`main`] with the arguments given (the first is the program's name),
+/// for a program that reads a flag of its own first (chapter 7's `--like`).
+pub fn main_with_args<S: Step>(
+    chapter: &Chapter<S>,
+    args: impl IntoIterator<Item = impl Into<OsString> + Clone>,
+) -> ExitCode {
+    let result = Options::parse_for(chapter, args)
         .map_err(|e| match e.kind() {
             clap::error::ErrorKind::DisplayHelp | clap::error::ErrorKind::DisplayVersion => {
                 let _ = e.print();

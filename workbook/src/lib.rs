@@ -160,6 +160,13 @@ pub fn make_figures(
         quiet,
         t,
     )?);
+    written.extend(chapter_figures(
+        &ch07_eight_rays::chapter(ch07_eight_rays::Like::AntiAliasing),
+        figures,
+        size,
+        quiet,
+        t,
+    )?);
     let speed = figures.join("speed.md");
     save_text(&speed_table(&timings), &speed)?;
     written.push(speed);

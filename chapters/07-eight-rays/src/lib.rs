@@ -1,0 +1,87 @@
+//! Chapter 7: eight rays at a time.
+//!
+//! The lab's tracer was a fragment shader: the GPU ran it for many pixels
+//! at once, in lockstep, each lane of a SIMD unit on its own ray. Chapters
+//! 1–5 trace one ray at a time. This chapter traces the same rays, with the
+//! same arithmetic, eight at a time in one AVX register (`wide::f32x8`),
+//! and makes the same image to the byte:
+//!
+//! - [`soa`]: eight rays side by side, one array per number;
+//! - [`camera`]: a row's primary rays, eight at a time;
+//! - [`intersect`]: eight rays against the ground and every sphere, masks
+//!   instead of branches;
+//! - [`shade`]: the lab's shading and optics, lane by lane;
+//! - [`wave`]: one pass per depth over a whole row, the rays sent on packed
+//!   densely into the next wave;
+//! - [`render`]: every row on every core, each sample's ray tree summed in
+//!   the scalar tracer's order.
+//!
+//! With `--like chNN-…` ([`like`]) it traces as any of chapters 1–5.
+
+pub mod camera;
+pub mod intersect;
+pub mod like;
+pub mod render;
+pub mod shade;
+pub mod soa;
+pub mod wave;
+
+use ch01_ray_cast::RayCast;
+use ch02_shadows::Shadows;
+use ch03_reflection::Reflection;
+use ch04_refraction::Refraction;
+use raylab::indicatif::ProgressBar;
+use raylab::{Camera, Hit, Ray, Rendered, Scene, Settings, Step, Surface, Vec3};
+use raylab_cli::Chapter;
+
+pub use like::Like;
+
+/// Chapter 7's step: a Whitted chapter's shading, rendered in waves.
+///
+/// `shade` is that chapter's own, one ray at a time: the probe, the depth
+/// sweep and the rare over-budget sample use it. `render_image`, the main
+/// render, traces eight rays at a time.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct EightRays {
+    pub like: Like,
+}
+
+impl Step for EightRays {
+    fn shade(&self, ray: &Ray, hit: &Hit, surface: &mut Surface) -> Vec3 {
+        match self.like {
+            Like::RayCast => RayCast.shade(ray, hit, surface),
+            Like::Shadows => Shadows.shade(ray, hit, surface),
+            Like::Reflection => Reflection.shade(ray, hit, surface),
+            Like::Refraction | Like::AntiAliasing => Refraction.shade(ray, hit, surface),
+        }
+    }
+
+    fn render_image(
+        &self,
+        scene: &Scene,
+        camera: &Camera,
+        settings: &Settings,
+        progress: &ProgressBar,
+    ) -> Rendered {
+        render::render_waves(scene, camera, self, settings, progress)
+    }
+}
+
+/// The program's name, which is also its default output folder.
+pub const BINARY: &str = "ch07-eight-rays";
+
+/// Chapter 7's program, tracing as the chapter `like` does, with its
+/// defaults (chapter 5's when `--like` is not given).
+pub fn chapter(like: Like) -> Chapter<EightRays> {
+    let (max_depth, spp, probe) = like.defaults();
+    Chapter {
+        binary: BINARY,
+        about: "Chapter 7, eight rays at a time: chapter 5's image, to the byte, traced in waves of \
+                8-wide SIMD. --like ch01-ray-cast … ch05-antialiasing traces as that chapter does, \
+                with its defaults (default: ch05-antialiasing).",
+        max_depth,
+        spp,
+        probe,
+        step: EightRays { like },
+    }
+}

@@ -1,0 +1,309 @@
+//! Structure of arrays: eight rays side by side, one number of each per lane.
+//!
+//! The scalar chapters keep a ray as one struct (`origin`, `direction`, …):
+//! an *array of structures*. To work on eight rays at once, the eight
+//! origins' x coordinates must sit next to each other in one register, the
+//! y coordinates in another, and so on. So a wave of rays is stored as one
+//! array per number (a *structure of arrays*), and eight consecutive
+//! entries load straight into one `f32x8`.
+
+use std::ops::{Add, Neg, Sub};
+
+use raylab::{RayKind, Vec3};
+use wide::f32x8;
+
+/// How many rays are traced at once: one AVX register of `f32`.
+pub const LANES: usize = 8;
+
+/// Eight vectors: the x of every lane in `x`, and so on.
+#[derive(Clone, Copy, Debug)]
+pub struct Vec3x8 {
+    pub x: f32x8,
+    pub y: f32x8,
+    pub z: f32x8,
+}
+
+impl Vec3x8 {
+    /// The same vector in every lane.
+    pub fn splat(v: Vec3) -> Self {
+        Vec3x8 {
+            x: f32x8::splat(v.x),
+            y: f32x8::splat(v.y),
+            z: f32x8::splat(v.z),
+        }
+    }
+
+    // ANCHOR: dot
+    /// Eight dot products. Summed as glam sums them, `(x·x' + y·y') + z·z'`:
+    /// float addition is not associative, and the bytes must match.
+    pub fn dot(self, o: Vec3x8) -> f32x8 {
+        self.x * o.x + self.y * o.y + self.z * o.z
+    }
+
+    /// Eight unit vectors, made as glam's `normalize` makes one: each
+    /// component divided by the square root of the dot product (not
+    /// multiplied by its reciprocal, which rounds differently).
+    pub fn normalize(self) -> Vec3x8 {
+        let length = self.dot(self).sqrt();
+        Vec3x8 {
+            x: self.x / length,
+            y: self.y / length,
+            z: self.z / length,
+        }
+    }
+    // ANCHOR_END: dot
+
+    /// Each lane's vector times that lane's number.
+    pub fn scale(self, s: f32x8) -> Vec3x8 {
+        Vec3x8 {
+            x: s * self.x,
+            y: s * self.y,
+            z: s * self.z,
+        }
+    }
+
+    /// Lane by lane, `a` where `mask` is set and `b` elsewhere.
+    pub fn select(mask: f32x8, a: Vec3x8, b: Vec3x8) -> Vec3x8 {
+        Vec3x8 {
+            x: mask.blend(a.x, b.x),
+            y: mask.blend(a.y, b.y),
+            z: mask.blend(a.z, b.z),
+        }
+    }
+
+    /// Lane `lane` as a glam vector.
+    pub fn lane(&self, lane: usize) -> Vec3 {
+        Vec3::new(
+            self.x.as_array_ref()[lane],
+            self.y.as_array_ref()[lane],
+            self.z.as_array_ref()[lane],
+        )
+    }
+}
+
+/// `-x`, exactly: only the sign bit changes.
+pub fn negate(x: f32x8) -> f32x8 {
+    x ^ f32x8::splat(-0.0)
+}
+
+/// `-v` in every lane: the sign bit flipped, as `-v` does in scalar code
+/// (`wide`'s own negation is `0 − v`, which turns −0 into +0).
+impl Neg for Vec3x8 {
+    type Output = Vec3x8;
+    fn neg(self) -> Vec3x8 {
+        Vec3x8 {
+            x: negate(self.x),
+            y: negate(self.y),
+            z: negate(self.z),
+        }
+    }
+}
+
+impl Add for Vec3x8 {
+    type Output = Vec3x8;
+    fn add(self, o: Vec3x8) -> Vec3x8 {
+        Vec3x8 {
+            x: self.x + o.x,
+            y: self.y + o.y,
+            z: self.z + o.z,
+        }
+    }
+}
+
+impl Sub for Vec3x8 {
+    type Output = Vec3x8;
+    fn sub(self, o: Vec3x8) -> Vec3x8 {
+        Vec3x8 {
+            x: self.x - o.x,
+            y: self.y - o.y,
+            z: self.z - o.z,
+        }
+    }
+}
+
+// ANCHOR: rays
+/// A wave of rays, one array per number. The arrays are padded to a whole
+/// number of 8-lane groups (see [`Rays::pad`]); `len` counts the real rays.
+#[derive(Clone, Debug, Default)]
+pub struct Rays {
+    ox: Vec<f32>,
+    oy: Vec<f32>,
+    oz: Vec<f32>,
+    dx: Vec<f32>,
+    dy: Vec<f32>,
+    dz: Vec<f32>,
+    /// The share of the ray's light that reaches its sample.
+    weight: Vec<f32>,
+    /// Which of the row's samples the ray belongs to.
+    pub sample: Vec<u32>,
+    pub kind: Vec<RayKind>,
+    len: usize,
+}
+// ANCHOR_END: rays
+
+impl Rays {
+    /// Empty, keeping the memory for the next row.
+    pub fn clear(&mut self) {
+        for numbers in self.numbers_mut() {
+            numbers.clear();
+        }
+        self.sample.clear();
+        self.kind.clear();
+        self.len = 0;
+    }
+
+    fn numbers_mut(&mut self) -> [&mut Vec<f32>; 7] {
+        [
+            &mut self.ox,
+            &mut self.oy,
+            &mut self.oz,
+            &mut self.dx,
+            &mut self.dy,
+            &mut self.dz,
+            &mut self.weight,
+        ]
+    }
+
+    #[inline]
+    pub fn push(&mut self, origin: Vec3, direction: Vec3, weight: f32, sample: u32, kind: RayKind) {
+        self.ox.push(origin.x);
+        self.oy.push(origin.y);
+        self.oz.push(origin.z);
+        self.dx.push(direction.x);
+        self.dy.push(direction.y);
+        self.dz.push(direction.z);
+        self.weight.push(weight);
+        self.sample.push(sample);
+        self.kind.push(kind);
+        self.len += 1;
+    }
+
+    /// Make room for `more` rays, so that pushing them never reallocates.
+    pub fn reserve(&mut self, more: usize) {
+        for numbers in self.numbers_mut() {
+            numbers.reserve(more);
+        }
+        self.sample.reserve(more);
+        self.kind.reserve(more);
+    }
+
+    /// Append the first `count` lanes of eight rays of one kind.
+    pub fn push_lanes(
+        &mut self,
+        origins: Vec3x8,
+        directions: Vec3x8,
+        weights: f32x8,
+        samples: &[u32],
+        kind: RayKind,
+    ) {
+        let count = samples.len();
+        let numbers = [
+            origins.x,
+            origins.y,
+            origins.z,
+            directions.x,
+            directions.y,
+            directions.z,
+            weights,
+        ];
+        for (to, from) in self.numbers_mut().into_iter().zip(numbers) {
+            to.extend_from_slice(&from.as_array_ref()[..count]);
+        }
+        self.sample.extend_from_slice(samples);
+        self.kind.extend(std::iter::repeat_n(kind, count));
+        self.len += count;
+    }
+
+    /// The real rays (without the padding).
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// The number of 8-lane groups, the last one perhaps partly padding.
+    pub fn groups(&self) -> usize {
+        self.len.div_ceil(LANES)
+    }
+
+    /// Fill the last group with copies of the last ray, so that every
+    /// group loads eight real numbers (never NaN from uninitialised
+    /// memory). What the copies compute is thrown away.
+    pub fn pad(&mut self) {
+        let padded = self.groups() * LANES;
+        for numbers in self.numbers_mut() {
+            if let Some(&last) = numbers.last() {
+                numbers.resize(padded, last);
+            }
+        }
+    }
+
+    fn load(numbers: &[f32], group: usize) -> f32x8 {
+        let lanes: [f32; LANES] = numbers[group * LANES..(group + 1) * LANES]
+            .try_into()
+            .expect("waves are padded to whole groups");
+        f32x8::from(lanes)
+    }
+
+    pub fn origins(&self, group: usize) -> Vec3x8 {
+        Vec3x8 {
+            x: Rays::load(&self.ox, group),
+            y: Rays::load(&self.oy, group),
+            z: Rays::load(&self.oz, group),
+        }
+    }
+
+    pub fn directions(&self, group: usize) -> Vec3x8 {
+        Vec3x8 {
+            x: Rays::load(&self.dx, group),
+            y: Rays::load(&self.dy, group),
+            z: Rays::load(&self.dz, group),
+        }
+    }
+
+    pub fn weights(&self, group: usize) -> f32x8 {
+        Rays::load(&self.weight, group)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn eight_normalised_vectors_equal_glams_to_the_bit() {
+        let vs: Vec<Vec3> = (0..8)
+            .map(|i| Vec3::new(0.1 + i as f32, -0.37 * i as f32, 1.0 / (i as f32 + 3.0)))
+            .collect();
+        let wide = Vec3x8 {
+            x: f32x8::from(std::array::from_fn::<f32, 8, _>(|i| vs[i].x)),
+            y: f32x8::from(std::array::from_fn::<f32, 8, _>(|i| vs[i].y)),
+            z: f32x8::from(std::array::from_fn::<f32, 8, _>(|i| vs[i].z)),
+        };
+        let n = wide.normalize();
+        let d = wide.dot(Vec3x8::splat(Vec3::new(0.3, -0.7, 0.2)));
+        for (i, v) in vs.iter().enumerate() {
+            assert_eq!(n.lane(i), v.normalize());
+            assert_eq!(d.as_array_ref()[i], v.dot(Vec3::new(0.3, -0.7, 0.2)));
+        }
+    }
+
+    #[test]
+    fn negating_keeps_the_sign_of_zero_as_scalar_code_does() {
+        let minus = negate(f32x8::splat(0.0)).as_array_ref()[0];
+        assert!(minus == 0.0 && minus.is_sign_negative());
+    }
+
+    #[test]
+    fn a_wave_of_three_rays_pads_to_one_group_of_copies() {
+        let mut rays = Rays::default();
+        for i in 0..3 {
+            rays.push(Vec3::ZERO, Vec3::X, i as f32, i, RayKind::Primary);
+        }
+        rays.pad();
+        assert_eq!((rays.len(), rays.groups()), (3, 1));
+        assert_eq!(rays.weights(0).to_array(), [0., 1., 2., 2., 2., 2., 2., 2.]);
+    }
+}

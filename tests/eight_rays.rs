@@ -1,0 +1,121 @@
+//! Chapter 7 makes the scalar chapters' images to the byte, with the same
+//! rays: the same counts by kind and the same per-pixel depth and ray maps.
+
+use std::path::Path;
+
+use ch07_eight_rays::{EightRays, Like, render::render_waves};
+use raylab::indicatif::ProgressBar;
+use raylab::{Camera, RayKind, SamplePattern, Scene, Settings, Step, render};
+
+/// The scalar chapter that `like` imitates, as a step.
+fn scalar_step(like: Like) -> &'static dyn Step {
+    match like {
+        Like::RayCast => &ch01_ray_cast::RayCast,
+        Like::Shadows => &ch02_shadows::Shadows,
+        Like::Reflection => &ch03_reflection::Reflection,
+        Like::Refraction | Like::AntiAliasing => &ch04_refraction::Refraction,
+    }
+}
+
+fn settings(like: Like, (width, height): (u32, u32)) -> Settings {
+    let (max_depth, spp, _) = like.defaults();
+    Settings {
+        width,
+        height,
+        max_depth,
+        epsilon: 1e-4,
+        pattern: SamplePattern::with_samples(spp).expect("a chapter's own spp"),
+    }
+}
+
+/// Render with chapter `like`'s scalar step and with chapter 7; both must
+/// give the same bytes, ray counts and per-pixel maps.
+fn assert_same(like: Like, scene: &Scene, camera: &Camera, settings: &Settings) {
+    let hidden = ProgressBar::hidden();
+    let scalar = render(scene, camera, scalar_step(like), settings, &hidden);
+    let waves = render_waves(scene, camera, &EightRays { like }, settings, &hidden);
+    let what = format!("like {} at {settings}", like.binary());
+    assert!(
+        scalar.image.to_srgb8() == waves.image.to_srgb8(),
+        "{what}: the images differ"
+    );
+    assert_eq!(
+        scalar.image, waves.image,
+        "{what}: the linear colours differ"
+    );
+    for kind in RayKind::ALL {
+        assert_eq!(
+            scalar.counts.get(kind),
+            waves.counts.get(kind),
+            "{what}: {} rays",
+            kind.name()
+        );
+    }
+    assert_eq!(scalar.deepest, waves.deepest, "{what}: depth map");
+    assert_eq!(scalar.rays, waves.rays, "{what}: ray-count map");
+    assert_eq!(scalar.over_budget, waves.over_budget, "{what}: over budget");
+}
+
+#[test]
+fn every_chapter_at_its_defaults_is_the_same_image_to_the_byte() {
+    let (scene, camera) = (Scene::lab(), Camera::lab());
+    for like in Like::ALL {
+        assert_same(like, &scene, &camera, &settings(like, (160, 120)));
+    }
+}
+
+#[test]
+fn odd_widths_with_a_partial_last_group_and_a_single_pixel_are_the_same() {
+    let (scene, camera) = (Scene::lab(), Camera::lab());
+    for size in [(83, 61), (803, 5), (1, 1), (7, 3)] {
+        for like in [Like::Shadows, Like::Refraction, Like::AntiAliasing] {
+            assert_same(like, &scene, &camera, &settings(like, size));
+        }
+    }
+}
+
+#[test]
+fn other_depths_and_one_ray_per_pixel_are_the_same() {
+    let (scene, camera) = (Scene::lab(), Camera::lab());
+    for max_depth in [1, 2, 3, 17] {
+        let mut s = settings(Like::AntiAliasing, (120, 90));
+        s.max_depth = max_depth;
+        assert_same(Like::AntiAliasing, &scene, &camera, &s);
+        s.pattern = SamplePattern::PIXEL_CENTRE;
+        assert_same(Like::AntiAliasing, &scene, &camera, &s);
+    }
+    // Glass seen by a chapter without shadows: every feature is separate.
+    let mut s = settings(Like::Reflection, (120, 90));
+    s.max_depth = 3;
+    assert_same(Like::Reflection, &scene, &camera, &s);
+}
+
+#[test]
+fn every_scene_file_renders_the_same() {
+    let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes");
+    let mut files: Vec<_> = std::fs::read_dir(&scenes)
+        .expect("the scenes folder")
+        .map(|e| e.expect("a scene file").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 4, "{files:?}");
+    for file in files {
+        let (scene, camera) = raylab_cli::scene_file::load(&file).expect("the scene loads");
+        for like in [Like::Reflection, Like::AntiAliasing] {
+            assert_same(like, &scene, &camera, &settings(like, (96, 72)));
+        }
+    }
+}
+
+#[test]
+fn with_no_offset_the_trees_that_reach_the_ray_budget_are_the_same() {
+    // --epsilon 0 lets rays re-hit the surface they leave and split again
+    // and again: some trees reach the budget, and are cut where the scalar
+    // tracer cuts them.
+    let (scene, camera) = (Scene::lab(), Camera::lab());
+    let mut s = settings(Like::Refraction, (64, 48));
+    s.epsilon = 0.0;
+    s.max_depth = 24;
+    assert_same(Like::Refraction, &scene, &camera, &s);
+}
