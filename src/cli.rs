@@ -166,30 +166,61 @@ pub enum CliError {
     },
 }
 
+/// What the shared command line needs to know of a program: its name, its
+/// line of help and its defaults. Every [`Chapter`] has one; a chapter that
+/// does not render through the Whitted [`Step`] (chapter 6, a path tracer)
+/// names its own, adds its own flags to [`Options::command`] and ends with
+/// [`exit`], so that its command line and its errors are the same as every
+/// other chapter's.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Program {
+    pub binary: &'static str,
+    pub about: &'static str,
+    pub max_depth: u32,
+    pub spp: u32,
+}
+
+impl<S: Step> Chapter<S> {
+    /// This chapter's name and defaults on the command line.
+    pub fn program(&self) -> Program {
+        Program {
+            binary: self.binary,
+            about: self.about,
+            max_depth: self.max_depth,
+            spp: self.spp,
+        }
+    }
+}
+
 impl Options {
+    /// The shared flags, with a program's name and defaults.
+    pub fn command(program: &Program) -> clap::Command {
+        <Options as CommandFactory>::command()
+            .name(program.binary)
+            .bin_name(program.binary)
+            .about(program.about)
+            .mut_arg("max_depth", |a| {
+                a.default_value(program.max_depth.to_string())
+                    .required(false)
+            })
+            .mut_arg("spp", |a| {
+                a.default_value(program.spp.to_string()).required(false)
+            })
+            .mut_arg("out", |a| {
+                a.help(format!(
+                    "Folder to write into [default: out/{}]",
+                    program.binary
+                ))
+            })
+    }
+
     /// The options of a chapter's program, parsed from `args` (the first
     /// one is the program's name), with that chapter's defaults.
     pub fn parse_for<S: Step>(
         chapter: &Chapter<S>,
         args: impl IntoIterator<Item = impl Into<OsString> + Clone>,
     ) -> Result<Self, clap::Error> {
-        let command = Options::command()
-            .name(chapter.binary)
-            .bin_name(chapter.binary)
-            .about(chapter.about)
-            .mut_arg("max_depth", |a| {
-                a.default_value(chapter.max_depth.to_string())
-                    .required(false)
-            })
-            .mut_arg("spp", |a| {
-                a.default_value(chapter.spp.to_string()).required(false)
-            })
-            .mut_arg("out", |a| {
-                a.help(format!(
-                    "Folder to write into [default: out/{}]",
-                    chapter.binary
-                ))
-            });
+        let command = Options::command(&chapter.program());
         Options::from_arg_matches(&command.try_get_matches_from(args)?)
     }
 
@@ -425,7 +456,7 @@ fn report_text<S: Step>(chapter: &Chapter<S>, options: &Options, report: &Report
 }
 
 /// Turn a clap error into the one line the learner sees.
-fn usage_line(error: &clap::Error) -> String {
+pub fn usage_line(error: &clap::Error) -> String {
     let text = error.render().to_string();
     let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
     let first = lines.next().unwrap_or("invalid arguments");
@@ -455,16 +486,21 @@ pub fn main<S: Step>(chapter: &Chapter<S>) -> ExitCode {
             let report = run(chapter, &options).map_err(Some)?;
             Ok((options, report))
         });
-    match result {
-        Ok((options, report)) => {
-            if !options.quiet {
-                print_report(chapter, &options, &report);
-            }
-            ExitCode::SUCCESS
+    let result = result.map(|(options, report)| {
+        if !options.quiet {
+            print_report(chapter, &options, &report);
         }
-        Err(None) => ExitCode::SUCCESS,
+    });
+    exit(chapter.binary, result)
+}
+
+/// The exit of every chapter program: success, a clean stop (`--help`,
+/// the end of `--watch`: `Err(None)`), or one line on stderr and code 2.
+pub fn exit(binary: &str, result: Result<(), Option<CliError>>) -> ExitCode {
+    match result {
+        Ok(()) | Err(None) => ExitCode::SUCCESS,
         Err(Some(error)) => {
-            eprintln!("{}: error: {error}", chapter.binary);
+            eprintln!("{binary}: error: {error}");
             ExitCode::from(2)
         }
     }
