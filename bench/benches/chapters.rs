@@ -2,6 +2,11 @@
 //! its throughput in rays (shadow rays included): criterion prints it as
 //! "Melem/s", that is, millions of rays per second.
 //!
+//! Chapter 6, the path tracer, is timed the same way at 800 × 600 with 16
+//! paths per pixel (its default 256 would take seconds per iteration): its
+//! throughput is in rays too (every segment and shadow ray), and it prints
+//! its rays per path once, so that paths/s = Mrays/s ÷ that number.
+//!
 //! `cargo bench -p raylab-bench`
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
@@ -28,12 +33,35 @@ fn bench_chapter<S: Step>(c: &mut Criterion, chapter: &Chapter<S>) {
     group.finish();
 }
 
+fn bench_path_tracing(c: &mut Criterion) {
+    use ch06_path_tracing::{PathSettings, run};
+    let (options, flags) =
+        run::parse(["ch06-path-tracing", "--spp", "16"]).expect("the defaults parse");
+    let settings: PathSettings = run::settings(&options, &flags).expect("valid");
+    let (scene, camera) = (Scene::lab(), Camera::lab());
+    let hidden = ProgressBar::hidden();
+    let first = ch06_path_tracing::render(&scene, &camera, &settings, &hidden);
+    println!(
+        "ch06-path-tracing, {}: {} rays per path",
+        settings,
+        first.rays as f64 / first.paths as f64
+    );
+    let mut group = c.benchmark_group("render 800x600");
+    group.throughput(Throughput::Elements(first.rays));
+    group.sample_size(10);
+    group.bench_function("ch06-path-tracing 16 spp", |b| {
+        b.iter(|| ch06_path_tracing::render(&scene, &camera, &settings, &hidden))
+    });
+    group.finish();
+}
+
 fn chapters(c: &mut Criterion) {
     bench_chapter(c, &ch01_ray_cast::CHAPTER);
     bench_chapter(c, &ch02_shadows::CHAPTER);
     bench_chapter(c, &ch03_reflection::CHAPTER);
     bench_chapter(c, &ch04_refraction::CHAPTER);
     bench_chapter(c, &ch05_antialiasing::CHAPTER);
+    bench_path_tracing(c);
 }
 
 criterion_group!(benches, chapters);
