@@ -11,7 +11,7 @@ use raylab::linear_image::LinearImage;
 use raylab::render::thousands;
 use raylab::{Camera, Scene, Vec3};
 
-use crate::caustics::{CausticMap, KERNEL_RADIUS, PHOTONS_PER_SPHERE};
+use crate::caustics::{CausticMap, KERNEL_RADIUS};
 use crate::integrator::{Materials, PathTracer, Terms};
 use crate::random::Random;
 use crate::sampling_shim::{Sampling, Stream, sample_rng};
@@ -30,6 +30,8 @@ pub struct PathSettings {
     /// `--sun-size` in degrees; `None` for a point sun.
     pub sun_size: Option<f32>,
     pub caustics: bool,
+    /// With `--caustics`: photons sent towards each mirror or glass sphere.
+    pub photons_per_sphere: u32,
 }
 
 /// A rendered image and everything measured along the way.
@@ -147,7 +149,11 @@ pub fn render(
     };
     let map = settings.caustics.then(|| {
         let start = Instant::now();
-        let map = CausticMap::trace(&tracer, PHOTONS_PER_SPHERE, settings.sampling.seed());
+        let map = CausticMap::trace(
+            &tracer,
+            settings.photons_per_sphere,
+            settings.sampling.seed(),
+        );
         let stats = CausticStats {
             sent: map.sent,
             landed: map.len(),

@@ -116,6 +116,7 @@ pub fn settings(options: &Options, flags: &Flags) -> Result<PathSettings, CliErr
         materials: flags.materials,
         sun_size: flags.sun_size,
         caustics: flags.caustics,
+        photons_per_sphere: crate::caustics::PHOTONS_PER_SPHERE,
     })
 }
 
