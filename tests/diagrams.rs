@@ -4,7 +4,7 @@
 use std::path::Path;
 
 use raylab::Step;
-use raylab::cli::{Chapter, Options, Report};
+use raylab_cli::{Chapter, Options, Report};
 
 /// Run a chapter at 80 × 60 into a fresh folder, with extra flags.
 fn run_small<S: Step>(chapter: &Chapter<S>, dir: &Path, extra: &[&str]) -> Report {
@@ -73,13 +73,13 @@ fn the_heat_map_of_chapter_1_is_uniform() {
         .to_rgb8();
     let grid_colours: std::collections::HashSet<_> = map
         .pixels()
-        .filter(|p| p.0 == raylab::plot::viridis(0.0))
+        .filter(|p| p.0 == raylab_plot::viridis(0.0))
         .take(80 * 60)
         .collect();
     assert_eq!(grid_colours.len(), 1);
     assert!(
         map.pixels()
-            .filter(|p| p.0 == raylab::plot::viridis(0.0))
+            .filter(|p| p.0 == raylab_plot::viridis(0.0))
             .count()
             >= 80 * 60
     );

@@ -11,8 +11,8 @@ use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
 
 use notify::{RecursiveMode, Watcher};
 
-use crate::cli::{Chapter, CliError, Options, print_report, run};
-use crate::trace::Step;
+use crate::{Chapter, CliError, Options, print_report, run};
+use raylab::trace::Step;
 
 /// How long the file must stay quiet before it is read: editors often
 /// save in several steps (truncate, write, rename).

@@ -1,4 +1,16 @@
-//! The command line every chapter binary shares.
+//! # raylab-cli: the lab bench every chapter stands on
+//!
+//! What turns a chapter's [`Step`] into a program a learner runs: the
+//! command line every chapter binary shares, writing files, scene files,
+//! `--watch`, the probe's text, and the figures of a render (depth and ray
+//! heat maps, the ray-tree diagram, the depth sweep). The tracer itself is
+//! the core crate `raylab`; the drawing is `raylab-plot`'s.
+
+pub mod diagrams;
+pub mod output;
+pub mod probe_text;
+pub mod scene_file;
+pub mod watch;
 
 use std::ffi::OsString;
 use std::io::{IsTerminal, Write};
@@ -8,17 +20,18 @@ use std::process::ExitCode;
 use clap::{CommandFactory, FromArgMatches, Parser};
 use indicatif::{ProgressBar, ProgressStyle};
 
-use crate::camera::Camera;
 use crate::diagrams::sweep::DepthSweep;
 use crate::diagrams::{heatmaps, ray_tree};
 use crate::output::{WriteError, save_png, save_text};
-use crate::probe::{self, ProbeTarget};
-use crate::render::{Rendered, Settings, render, render_every_depth};
-use crate::sampling::SamplePattern;
-use crate::scene::Scene;
-use crate::scene_file::{self, SceneFileError};
-use crate::stack::MAX_DEPTH_LIMIT;
-use crate::trace::Step;
+use raylab::camera::Camera;
+use raylab::probe::{self, ProbeTarget};
+
+use crate::scene_file::SceneFileError;
+use raylab::render::{Rendered, Settings, render, render_every_depth};
+use raylab::sampling::SamplePattern;
+use raylab::scene::Scene;
+use raylab::stack::MAX_DEPTH_LIMIT;
+use raylab::trace::Step;
 
 /// One step of the workbook: its program's name, its defaults, its step.
 pub struct Chapter<S: Step> {
@@ -380,7 +393,7 @@ fn write_diagrams<S: Step>(
         let rays: Vec<_> = trees.iter().flat_map(|t| t.rays.iter().copied()).collect();
         let figure = ray_tree::ray_tree_figure(scene, camera, &title, pixel, &rays);
         png("ray-tree.png", &figure)?;
-        let text = probe::format_tree(scene, pixel, &trees);
+        let text = probe_text::format_tree(scene, pixel, &trees);
         let path = dir.join("probe.txt");
         save_text(&text, &path)?;
         report.written.push(path);
