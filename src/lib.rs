@@ -42,6 +42,6 @@ pub use cli::Chapter;
 pub use material::Material;
 pub use ray::{Ray, RayKind};
 pub use render::{Rendered, Settings, render, render_every_depth};
-pub use sampling::SamplePattern;
+pub use sampling::{Pattern, Sampling};
 pub use scene::{Hit, Object, Scene};
 pub use trace::{Step, Surface, Tracer};
