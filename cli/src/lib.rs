@@ -28,7 +28,7 @@ use raylab::probe::{self, ProbeTarget};
 
 use crate::scene_file::SceneFileError;
 use raylab::render::{Rendered, Settings, render, render_every_depth};
-use raylab::sampling::SamplePattern;
+use raylab::sampling::{MAX_SPP, Pattern, Sampling, SamplingError};
 use raylab::scene::Scene;
 use raylab::stack::MAX_DEPTH_LIMIT;
 use raylab::trace::Step;
@@ -72,9 +72,18 @@ pub struct Options {
           value_parser = clap::value_parser!(u32).range(1..=MAX_DEPTH_LIMIT as i64))]
     pub max_depth: u32,
 
-    /// Rays per pixel: 1 (the pixel centre) or 5 (the lab's five rays)
+    /// Rays per pixel, 1 to 4096: 1 is the pixel centre and 5 the lab's five rays, unless --pattern is given
     #[arg(long, value_name = "N", value_parser = parse_spp, allow_negative_numbers = true)]
     pub spp: u32,
+
+    /// Where a pixel's rays go: grid (N = m²), jittered (N = m²), random or halton [default: for --spp other than 1 and 5, jittered where N is a square, else halton]
+    #[arg(long, value_name = "PATTERN", value_parser = parse_pattern)]
+    pub pattern: Option<Pattern>,
+
+    /// The seed of every random choice: the same seed gives the same image, on any number of cores
+    #[arg(long, value_name = "S", default_value_t = 0, value_parser = parse_seed,
+          allow_negative_numbers = true)]
+    pub seed: u64,
 
     /// How far shadow and secondary rays start from their surface (try 0 for shadow acne)
     #[arg(long, value_name = "DISTANCE", default_value_t = 1e-4, value_parser = parse_epsilon,
@@ -121,17 +130,25 @@ fn parse_pixel(text: &str) -> Result<(u32, u32), String> {
 }
 
 fn parse_spp(text: &str) -> Result<u32, String> {
-    let allowed = || {
-        let counts: Vec<String> = SamplePattern::ALL
-            .iter()
-            .map(|p| format!("{} ({})", p.len(), p.name()))
-            .collect();
-        counts.join(" or ")
-    };
     match text.parse::<u32>() {
-        Ok(n) if SamplePattern::with_samples(n).is_some() => Ok(n),
-        _ => Err(format!("rays per pixel must be {}", allowed())),
+        Ok(n) if (1..=MAX_SPP).contains(&n) => Ok(n),
+        _ => Err(format!(
+            "rays per pixel must be a whole number from 1 to {MAX_SPP} \
+             (1 is the pixel centre, 5 the lab's five rays)"
+        )),
     }
+}
+
+fn parse_pattern(text: &str) -> Result<Pattern, String> {
+    Pattern::from_name(text).ok_or_else(|| {
+        let names: Vec<&str> = Pattern::ALL.iter().map(|p| p.name()).collect();
+        format!("the pattern must be one of {}", names.join(", "))
+    })
+}
+
+fn parse_seed(text: &str) -> Result<u64, String> {
+    text.parse::<u64>()
+        .map_err(|_| format!("the seed must be a whole number from 0 to {}", u64::MAX))
 }
 
 fn parse_epsilon(text: &str) -> Result<f32, String> {
@@ -164,6 +181,8 @@ pub enum CliError {
     Write(#[from] WriteError),
     #[error("{0}")]
     Scene(#[from] SceneFileError),
+    #[error("{0}")]
+    Sampling(#[from] SamplingError),
     #[error("--watch needs --scene FILE: it renders again when that file is saved")]
     WatchNeedsScene,
     #[error("cannot watch the scene file: {0}")]
@@ -274,7 +293,7 @@ impl Options {
             height: self.height,
             max_depth: self.max_depth,
             epsilon: self.epsilon,
-            pattern: SamplePattern::with_samples(self.spp).expect("checked when parsed"),
+            sampling: Sampling::new(self.spp, self.pattern, self.seed)?,
         })
     }
 }

@@ -180,7 +180,7 @@ pub fn make_figures(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use raylab::SamplePattern;
+    use raylab::Sampling;
 
     #[test]
     fn the_speed_table_has_a_row_per_run_with_grouped_rays_and_milliseconds() {
@@ -189,7 +189,7 @@ mod tests {
             height: 600,
             max_depth: 10,
             epsilon: 1e-4,
-            pattern: SamplePattern::with_samples(1).unwrap(),
+            sampling: Sampling::PIXEL_CENTRE,
         };
         let timing = Timing {
             binary: "ch04-refraction",

@@ -18,7 +18,7 @@ use raylab::{Ray, Scene, Vec3};
 
 use crate::integrator::{Lobe, PathTracer};
 use crate::random::Random;
-use crate::sampling_shim::{Stream, sample_rng};
+use raylab::sampling::{Stream, sample_rng};
 
 /// The density estimate's kernel radius on the ground, in scene units
 /// (the checker squares are 1 across).
@@ -207,10 +207,10 @@ fn photon(
     let sphere = &scene.spheres()[index].shape;
     // A direction towards the sun, and a point on the disc, facing it,
     // that just covers the sphere; the beam starts beyond every object.
-    let to_sun = tracer.sun.sample(random.next(), random.next());
+    let to_sun = tracer.sun.sample(random.uniform(), random.uniform());
     let (t, b) = to_sun.any_orthonormal_pair();
-    let r = sphere.radius * random.next().sqrt();
-    let (sin, cos) = (2.0 * std::f32::consts::PI * random.next()).sin_cos();
+    let r = sphere.radius * random.uniform().sqrt();
+    let (sin, cos) = (2.0 * std::f32::consts::PI * random.uniform()).sin_cos();
     let far = scene
         .spheres()
         .iter()
@@ -223,8 +223,8 @@ fn photon(
     let power =
         tracer.sun.irradiance * std::f32::consts::PI * sphere.radius.powi(2) / per_sphere as f32;
     let mut ray = Ray::new(origin, -to_sun);
-    let mut bounces = 0;
-    for _ in 0..tracer.max_depth {
+    // `bounces`: the mirror and glass bounces before this hit.
+    for bounces in 0..tracer.max_depth {
         *rays += 1;
         let hit = scene.nearest_hit(&ray)?;
         // The beam is for this sphere: light that meets something else
@@ -233,7 +233,7 @@ fn photon(
             return None;
         }
         let d = ray.direction;
-        let direction = match tracer.choose_lobe(d, &hit, random.next()) {
+        let direction = match tracer.choose_lobe(d, &hit, random.uniform()) {
             Lobe::Diffuse if hit.object == Object::Ground && bounces > 0 => {
                 return Some(Photon {
                     u: (hit.point - scene.ground.plane.point).dot(ground_axes(scene).0),
@@ -252,7 +252,6 @@ fn photon(
             }
         }
         .normalize();
-        bounces += 1;
         ray = Ray::new(hit.point + direction * tracer.epsilon, direction);
     }
     None

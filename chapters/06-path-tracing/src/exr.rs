@@ -5,7 +5,7 @@ use std::path::Path;
 
 use image::{DynamicImage, Rgb32FImage};
 use raylab::linear_image::LinearImage;
-use raylab::output::{WriteError, write_atomically};
+use raylab_cli::output::{WriteError, write_atomically};
 
 /// Save a linear image as an RGB 32-bit float EXR, atomically.
 pub fn save_exr(image: &LinearImage, path: &Path) -> Result<(), WriteError> {

@@ -196,7 +196,7 @@ impl PathTracer<'_> {
                 break;
             };
             let d = ray.direction;
-            let lobe = self.choose_lobe(d, &hit, random.next());
+            let lobe = self.choose_lobe(d, &hit, random.uniform());
             let direction = match lobe {
                 Lobe::Diffuse => {
                     let albedo = hit.material.albedo();
@@ -204,7 +204,7 @@ impl PathTracer<'_> {
                     // The sun, by next-event estimation: one shadow ray
                     // towards a point of its disc, whose light is
                     // albedo/π · E_sun · cos θ when nothing is in the way.
-                    let to_sun = self.sun.sample(random.next(), random.next());
+                    let to_sun = self.sun.sample(random.uniform(), random.uniform());
                     let cos = nf.dot(to_sun);
                     if cos > 0.0 {
                         *rays += 1;
@@ -260,8 +260,8 @@ fn eta(hit: &Hit) -> f32 {
 /// sine or cosine: the random numbers are cheaper than the trigonometry.
 pub fn cosine_direction(n: Vec3, random: &mut Random) -> Vec3 {
     let (x, y, r2) = loop {
-        let x = 2.0 * random.next() - 1.0;
-        let y = 2.0 * random.next() - 1.0;
+        let x = 2.0 * random.uniform() - 1.0;
+        let y = 2.0 * random.uniform() - 1.0;
         let r2 = x * x + y * y;
         if r2 < 1.0 {
             break (x, y, r2);
@@ -283,11 +283,11 @@ mod tests {
         // E[cos θ] under cos θ/π is ∫cos²θ dω/π = 2/3.
         let n = Vec3::new(0.3, 0.9, -0.2).normalize();
         // Its variance is E[cos²] − (2/3)² = 1/2 − 4/9 = 1/18.
-        let mut random = Random(crate::sampling_shim::sample_rng(
+        let mut random = Random(raylab::sampling::sample_rng(
             7,
             (0, 0),
             0,
-            crate::sampling_shim::Stream::Path,
+            raylab::sampling::Stream::Path,
         ));
         let k = 100_000;
         let mut sum = 0.0f64;

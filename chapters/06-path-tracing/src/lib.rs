@@ -20,7 +20,6 @@ pub mod integrator;
 pub mod random;
 pub mod render;
 pub mod run;
-pub mod sampling_shim;
 pub mod sun;
 
 pub use integrator::{Materials, PathTracer, Terms};

@@ -14,8 +14,8 @@ use raylab::{Camera, Scene, Vec3};
 use crate::caustics::{CausticMap, KERNEL_RADIUS};
 use crate::integrator::{Materials, PathTracer, Terms};
 use crate::random::Random;
-use crate::sampling_shim::{Sampling, Stream, sample_rng};
 use crate::sun::Sunlight;
+use raylab::sampling::{Sampling, Stream, sample_rng};
 
 /// What to render.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -214,11 +214,11 @@ impl fmt::Display for PathSettings {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "{}×{}, {} spp ({:?}, seed {}), max depth {}, {} materials, ",
+            "{}×{}, {} spp ({}, seed {}), max depth {}, {} materials, ",
             self.width,
             self.height,
             self.sampling.spp(),
-            self.sampling.pattern(),
+            self.sampling.pattern().map_or("pixel centre", |p| p.name()),
             self.sampling.seed(),
             self.max_depth,
             self.materials.name()

@@ -6,15 +6,15 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Args, FromArgMatches};
-use raylab::cli::{self, CliError, MAX_PIXELS, Options, Program};
-use raylab::output::save_png;
 use raylab::{Camera, Scene};
+use raylab_cli::output::save_png;
+use raylab_cli::{self as cli, CliError, MAX_PIXELS, Options, Program};
 
 use crate::exr::save_exr;
 use crate::integrator::{Materials, Terms};
 use crate::render::{PathRender, PathSettings, render};
-use crate::sampling_shim::{Pattern, Sampling};
 use crate::sun::MAX_SUN_SIZE;
+use raylab::sampling::{Pattern, Sampling};
 
 /// Chapter 6's name and defaults: 256 paths per pixel, ten hits per path.
 pub const PROGRAM: Program = Program {
@@ -39,14 +39,6 @@ pub struct Flags {
     /// Add the caustics: light traced from the sun through mirror and glass onto the ground
     #[arg(long)]
     pub caustics: bool,
-
-    /// Where a pixel's paths start inside it
-    #[arg(long, value_enum, default_value_t = Pattern::Random)]
-    pub pattern: Pattern,
-
-    /// The seed of every random choice: the same seed gives the same image
-    #[arg(long, value_name = "N", default_value_t = 1)]
-    pub seed: u64,
 }
 
 fn parse_sun_size(text: &str) -> Result<f32, String> {
@@ -61,10 +53,11 @@ fn parse_sun_size(text: &str) -> Result<f32, String> {
 
 /// The shared flags with chapter 6's defaults, and its own.
 pub fn command() -> clap::Command {
-    Flags::augment_args(Options::command(&PROGRAM)).mut_arg("spp", |a| {
-        a.value_parser(clap::value_parser!(u32).range(1..=4096))
-            .help("Paths per pixel, 1 to 4096")
-    })
+    Flags::augment_args(Options::command(&PROGRAM))
+        .mut_arg("spp", |a| a.help("Paths per pixel, 1 to 4096"))
+        .mut_arg("pattern", |a| {
+            a.help("Where a pixel's paths start: jittered (N = m²), random or halton [default: random]")
+        })
 }
 
 /// Parse chapter 6's command line (`args` starts with the program's name).
@@ -105,8 +98,19 @@ pub fn settings(options: &Options, flags: &Flags) -> Result<PathSettings, CliErr
             pixels,
         });
     }
-    let sampling =
-        Sampling::new(options.spp, Some(flags.pattern), flags.seed).map_err(CliError::Usage)?;
+    // A path tracer's pixel is the average over its whole area (LAB.md),
+    // so its samples are spread at random, even for one path per pixel;
+    // by default independently, so that the variance estimated from them
+    // is exactly the variance of the mean.
+    let pattern = options.pattern.unwrap_or(Pattern::Random);
+    if pattern == Pattern::Grid {
+        return Err(CliError::Usage(
+            "chapter 6 cannot use --pattern grid: a path tracer's samples must be spread at \
+             random over the pixel (use jittered, random or halton)"
+                .into(),
+        ));
+    }
+    let sampling = Sampling::new(options.spp, Some(pattern), options.seed)?;
     Ok(PathSettings {
         width: options.width,
         height: options.height,
@@ -143,7 +147,7 @@ pub const TERM_FILES: [&str; 5] = [
 pub fn run(options: &Options, flags: &Flags) -> Result<Report, CliError> {
     let settings = settings(options, flags)?;
     let (scene, camera) = match &options.scene {
-        Some(path) => raylab::scene_file::load(path)?,
+        Some(path) => raylab_cli::scene_file::load(path)?,
         None => (Scene::lab(), Camera::lab()),
     };
     let out_dir = options

@@ -1,12 +1,12 @@
 //! Chapter 6 against what is known: closed forms, a furnace, itself.
 
 use ch06_path_tracing::random::Random;
-use ch06_path_tracing::sampling_shim::{Pattern, Sampling, Stream, sample_rng};
 use ch06_path_tracing::sun::Sunlight;
 use ch06_path_tracing::{Materials, PathRender, PathSettings, PathTracer, Terms, render};
 use raylab::indicatif::ProgressBar;
 use raylab::light::{Sky, Sun};
 use raylab::plane::{Checker, Plane};
+use raylab::sampling::{Pattern, Sampling, Stream, sample_rng};
 use raylab::scene::Ground;
 use raylab::sphere::Sphere;
 use raylab::{Camera, Material, Ray, Scene, Vec3};
