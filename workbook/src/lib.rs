@@ -2,6 +2,7 @@
 //! a small scale: render every chapter and every figure of the book into
 //! `book/src/figures/`, then build the book with mdBook.
 
+pub mod antialiasing;
 pub mod book;
 pub mod extras;
 
@@ -162,6 +163,7 @@ pub fn make_figures(
     save_text(&speed_table(&timings), &speed)?;
     written.push(speed);
     written.extend(extras::make_extras(&figures.join("extras"), size)?);
+    written.extend(antialiasing::make_figures(&figures.join("sampling"), size)?);
     written.extend(extras::make_scene_figures(
         &figures.join("scenes"),
         scenes,
