@@ -2,32 +2,31 @@
 //!
 //! Everything the workbook's steps share: vectors (glam), rays, the lab's
 //! shapes and scene, the pinhole camera, the ray stack and its tracing
-//! loop, sampling, image encoding, and the command line. A chapter crate
-//! supplies one thing, a [`Step`]: what happens when a ray hits a surface.
+//! loop, sampling, rendering on every core, and image encoding. A chapter
+//! crate supplies one thing, a [`Step`]: what happens when a ray hits a
+//! surface.
+//!
+//! Nothing here draws a figure, reads a file or parses a command line: the
+//! program around a step is `raylab-cli`'s, and its figures are drawn with
+//! `raylab-plot`.
 //!
 //! `../shared/LAB.md` in the workbook defines every formula used here.
 
 pub mod camera;
-pub mod cli;
-pub mod diagrams;
 pub mod light;
 pub mod linear_image;
 pub mod material;
 pub mod optics;
-pub mod output;
 pub mod plane;
-pub mod plot;
 pub mod probe;
 pub mod ray;
 pub mod render;
 pub mod sampling;
 pub mod scene;
-pub mod scene_file;
 pub mod sphere;
 pub mod srgb;
 pub mod stack;
 pub mod trace;
-pub mod watch;
 
 /// The vector of every point, direction and colour: glam's `Vec3A`, a
 /// `Vec3` padded to 16 bytes so that it fills one SIMD register (SSE2 on
@@ -38,7 +37,6 @@ pub use glam::Vec3A as Vec3;
 pub use indicatif;
 
 pub use camera::Camera;
-pub use cli::Chapter;
 pub use material::Material;
 pub use ray::{Ray, RayKind};
 pub use render::{Rendered, Settings, render, render_every_depth};

@@ -2,9 +2,9 @@
 //! defaults otherwise). Regenerate them, on purpose only, with
 //! `RAYLAB_BLESS=1 cargo test -p raylab-tests --test golden` and look at the result.
 
-use raylab::cli::{Chapter, Options};
 use raylab::indicatif::ProgressBar;
 use raylab::{Camera, Scene, Step, render};
+use raylab_cli::{Chapter, Options};
 use raylab_tests::check_golden;
 
 fn render_small<S: Step>(chapter: &Chapter<S>) -> raylab::Rendered {

@@ -94,18 +94,18 @@ pub fn check_golden(binary: &str, image: &RgbImage) {
 /// # Panics
 /// If the flags do not parse or the run fails: these are tests.
 pub fn run_chapter<S: raylab::Step>(
-    chapter: &raylab::cli::Chapter<S>,
+    chapter: &raylab_cli::Chapter<S>,
     (width, height): (u32, u32),
     dir: &std::path::Path,
     extra: &[&str],
-) -> raylab::cli::Report {
+) -> raylab_cli::Report {
     let out = dir.join(chapter.binary);
     let mut args: Vec<String> = [chapter.binary, "--quiet"].map(String::from).to_vec();
     args.extend([format!("--width={width}"), format!("--height={height}")]);
     args.push(format!("--out={}", out.display()));
     args.extend(extra.iter().map(|a| a.to_string()));
-    let options = raylab::cli::Options::parse_for(chapter, args).expect("the flags parse");
-    raylab::cli::run(chapter, &options).expect("the chapter runs")
+    let options = raylab_cli::Options::parse_for(chapter, args).expect("the flags parse");
+    raylab_cli::run(chapter, &options).expect("the chapter runs")
 }
 
 #[cfg(test)]

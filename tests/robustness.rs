@@ -7,8 +7,8 @@ use std::path::Path;
 
 use proptest::prelude::*;
 use raylab::indicatif::ProgressBar;
-use raylab::scene_file::parse;
 use raylab::{Sampling, Settings, render};
+use raylab_cli::scene_file::parse;
 
 /// Floats of every kind: ordinary, zero, tiny, huge, negative, NaN, infinite.
 fn wild() -> impl Strategy<Value = f32> {

@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 
 use raylab::Step;
-use raylab::cli::{Chapter, Report};
+use raylab_cli::{Chapter, Report};
 
 fn scene(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))

@@ -5,9 +5,9 @@
 //! `cargo bench -p raylab-bench`
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use raylab::cli::{Chapter, Options};
 use raylab::indicatif::ProgressBar;
 use raylab::{Camera, Sampling, Scene, Settings, Step, render};
+use raylab_cli::{Chapter, Options};
 
 fn bench_chapter<S: Step>(c: &mut Criterion, chapter: &Chapter<S>) {
     let settings = Options::defaults(chapter)

@@ -10,11 +10,11 @@ use std::path::{Path, PathBuf};
 
 use image::RgbImage;
 use raylab::linear_image::LinearImage;
-use raylab::output::{save_png, save_text};
-use raylab::plot::colour::{AXIS, GRID, TEXT, TEXT_MUTED, WHITE, series_colour};
-use raylab::plot::{Anchor, Canvas, Corner, LinePlot, Series, montage};
 use raylab::sampling::{Layout, Pattern, Sampling};
 use raylab::{Camera, Scene, Settings, Step, Tracer, Vec3};
+use raylab_cli::output::{save_png, save_text};
+use raylab_plot::colour::{AXIS, GRID, TEXT, TEXT_MUTED, WHITE, series_colour};
+use raylab_plot::{Anchor, Canvas, Corner, LinePlot, Series, montage};
 use rayon::prelude::*;
 
 use crate::{JobError, Size};
@@ -467,7 +467,7 @@ fn crops_figure<S: Step + ?Sized>(step: &S, size: Size) -> RgbImage {
 
 /// Write chapter 5's sampling figures into `dir`.
 pub fn make_figures(dir: &Path, size: Size) -> Result<Vec<PathBuf>, JobError> {
-    raylab::cli::prepare_out_dir(dir)?;
+    raylab_cli::prepare_out_dir(dir)?;
     let step = ch05_antialiasing::Refraction;
     let points = measure_errors(&step, size, REFERENCE_SPP, 0);
     let images = [

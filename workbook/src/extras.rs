@@ -5,11 +5,11 @@ use std::path::{Path, PathBuf};
 
 use image::RgbImage;
 use raylab::indicatif::ProgressBar;
-use raylab::output::save_png;
-use raylab::plot::colour::{AXIS, GRID, TEXT, TEXT_MUTED, WHITE};
-use raylab::plot::{Anchor, Canvas};
 use raylab::sampling::LAB_FIVE;
 use raylab::{Camera, Sampling, Scene, Settings, Step, render};
+use raylab_cli::output::save_png;
+use raylab_plot::colour::{AXIS, GRID, TEXT, TEXT_MUTED, WHITE};
+use raylab_plot::{Anchor, Canvas};
 
 use crate::{JobError, Size};
 
@@ -54,7 +54,7 @@ fn horizon_crop(image: &RgbImage) -> RgbImage {
 
 /// Write every extra figure into `dir`.
 pub fn make_extras(dir: &Path, size: Size) -> Result<Vec<PathBuf>, JobError> {
-    raylab::cli::prepare_out_dir(dir)?;
+    raylab_cli::prepare_out_dir(dir)?;
     let shadows = ch02_shadows::Shadows;
     let refraction = ch04_refraction::Refraction;
     let images: [RgbImage; 7] = [
@@ -91,11 +91,11 @@ pub const SCENE_FIGURES: [(&str, &str, u32); 4] = [
 /// Render the scene files of `scenes` into `dir` with chapter 4's step
 /// (which does everything chapters 2 and 3 do, and refraction).
 pub fn make_scene_figures(dir: &Path, scenes: &Path, size: Size) -> Result<Vec<PathBuf>, JobError> {
-    raylab::cli::prepare_out_dir(dir)?;
+    raylab_cli::prepare_out_dir(dir)?;
     let mut written = Vec::new();
     for (name, file, max_depth) in SCENE_FIGURES {
         let (scene, camera) =
-            raylab::scene_file::load(&scenes.join(file)).map_err(raylab::cli::CliError::from)?;
+            raylab_cli::scene_file::load(&scenes.join(file)).map_err(raylab_cli::CliError::from)?;
         let settings = settings(size, max_depth, 1, 1e-4);
         let image = render(
             &scene,
@@ -141,7 +141,7 @@ fn shadow_offset_diagram() -> RgbImage {
         TEXT_MUTED,
         Anchor::TOP_CENTRE,
     );
-    let shadow = raylab::diagrams::kind_colour(raylab::RayKind::Shadow);
+    let shadow = raylab_cli::diagrams::kind_colour(raylab::RayKind::Shadow);
     let blocked = [204, 51, 51];
     // Left: the feeler from the rounded point, just below the surface.
     let p = (220.0, surface_y(220.0) + 10.0);

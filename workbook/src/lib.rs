@@ -5,14 +5,15 @@
 pub mod antialiasing;
 pub mod book;
 pub mod extras;
+pub mod math;
 
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
-use raylab::cli::{self, Chapter, CliError, Options};
-use raylab::output::save_text;
 use raylab::render::thousands;
 use raylab::{Settings, Step};
+use raylab_cli::output::save_text;
+use raylab_cli::{self as cli, Chapter, CliError, Options};
 
 /// Why the main job stopped.
 #[derive(Debug, thiserror::Error)]
@@ -20,7 +21,7 @@ pub enum JobError {
     #[error(transparent)]
     Chapter(#[from] CliError),
     #[error("{0}")]
-    Write(#[from] raylab::output::WriteError),
+    Write(#[from] raylab_cli::output::WriteError),
     #[error("the book did not build: {0}")]
     Book(String),
 }

@@ -9,7 +9,8 @@ use std::f32::consts::PI;
 
 use raylab::light::Sun;
 use raylab::probe::ProbeTarget;
-use raylab::{Chapter, Hit, Ray, Step, Surface, Vec3};
+use raylab::{Hit, Ray, Step, Surface, Vec3};
+use raylab_cli::Chapter;
 
 // ANCHOR: constants
 /// The share of the sun's brightness that reaches a lit surface (`k`).

@@ -1,4 +1,4 @@
 //! `cargo run -p ch01-ray-cast -- --help`
 fn main() -> std::process::ExitCode {
-    raylab::cli::main(&ch01_ray_cast::CHAPTER)
+    raylab_cli::main(&ch01_ray_cast::CHAPTER)
 }

@@ -84,13 +84,49 @@ fn a_probe_prints_the_ray_tree() {
     );
     let stdout = String::from_utf8(output.stdout).unwrap();
     assert!(
-        stdout.contains("ray tree of pixel (20, 20): 1 rays, colour"),
+        stdout.contains("ray tree of pixel (20, 20): 1 ray, colour"),
         "{stdout}"
     );
     assert!(
         stdout.contains("primary (depth 1, weight 1.0000)"),
         "{stdout}"
     );
+}
+
+#[test]
+fn an_explicit_probe_is_answered_even_when_quiet_and_without_diagrams() {
+    let dir = tempfile::tempdir().unwrap();
+    let args = ["--width", "40", "--height", "30", "--probe", "20,20"];
+    let output = run(
+        &[&args[..], &["--quiet", "--no-diagrams"]].concat(),
+        dir.path(),
+    );
+    assert!(output.status.success(), "{output:?}");
+    let stdout = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        stdout.starts_with("ray tree of pixel (20, 20): 1 ray"),
+        "--quiet still prints the tree asked for, and only that: {stdout}"
+    );
+    assert!(!stdout.contains("Mrays/s"), "no summary: {stdout}");
+    let out = dir.path().join("out/ch01-ray-cast");
+    let probe = std::fs::read_to_string(out.join("probe.txt")).unwrap();
+    assert_eq!(probe, stdout, "probe.txt holds what was printed");
+    assert_eq!(
+        files_in(&out),
+        ["probe.txt", "ray-tree.png", "render.png"],
+        "--no-diagrams leaves out the heat maps, not the probe"
+    );
+}
+
+#[test]
+fn help_says_what_quiet_and_no_diagrams_do_to_a_probe() {
+    let output = run(&["--help"], &std::env::temp_dir());
+    let help = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        help.contains("even with --quiet or --no-diagrams"),
+        "{help}"
+    );
+    assert!(help.contains("--probe-full"), "{help}");
 }
 
 #[test]

@@ -6,7 +6,8 @@
 
 use ch01_ray_cast::{SUN_LIT, local_light};
 use raylab::probe::ProbeTarget;
-use raylab::{Chapter, Hit, Ray, Step, Surface, Vec3};
+use raylab::{Hit, Ray, Step, Surface, Vec3};
+use raylab_cli::Chapter;
 
 // ANCHOR: constants
 /// The share of the sun's brightness that reaches a surface in shadow. Not

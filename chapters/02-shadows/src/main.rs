@@ -1,4 +1,4 @@
 //! `cargo run -p ch02-shadows -- --help`
 fn main() -> std::process::ExitCode {
-    raylab::cli::main(&ch02_shadows::CHAPTER)
+    raylab_cli::main(&ch02_shadows::CHAPTER)
 }

@@ -8,7 +8,8 @@
 use ch02_shadows::Shadows;
 use raylab::optics::reflect;
 use raylab::probe::ProbeTarget;
-use raylab::{Chapter, Hit, Ray, RayKind, Step, Surface, Vec3};
+use raylab::{Hit, Ray, RayKind, Step, Surface, Vec3};
+use raylab_cli::Chapter;
 
 // ANCHOR: reflection
 /// Send the reflected share of the light on along the mirror direction.

@@ -1,4 +1,4 @@
 //! `cargo run -p ch03-reflection -- --help`
 fn main() -> std::process::ExitCode {
-    raylab::cli::main(&ch03_reflection::CHAPTER)
+    raylab_cli::main(&ch03_reflection::CHAPTER)
 }

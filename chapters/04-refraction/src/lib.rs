@@ -9,7 +9,8 @@
 use ch03_reflection::Reflection;
 use raylab::optics::{reflect, refract};
 use raylab::probe::ProbeTarget;
-use raylab::{Chapter, Hit, Ray, RayKind, Step, Surface, Vec3};
+use raylab::{Hit, Ray, RayKind, Step, Surface, Vec3};
+use raylab_cli::Chapter;
 
 // ANCHOR: refraction
 /// Send the transmitted share of the light on through the surface.

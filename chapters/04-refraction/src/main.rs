@@ -1,4 +1,4 @@
 //! `cargo run -p ch04-refraction -- --help`
 fn main() -> std::process::ExitCode {
-    raylab::cli::main(&ch04_refraction::CHAPTER)
+    raylab_cli::main(&ch04_refraction::CHAPTER)
 }

@@ -9,8 +9,8 @@
 //! `raylab::render`. Both live in the core so that every chapter takes
 //! `--spp 5`.
 
-use raylab::Chapter;
 use raylab::probe::ProbeTarget;
+use raylab_cli::Chapter;
 
 pub use ch04_refraction::Refraction;
 

@@ -1,4 +1,4 @@
 //! `cargo run -p ch05-antialiasing -- --help`
 fn main() -> std::process::ExitCode {
-    raylab::cli::main(&ch05_antialiasing::CHAPTER)
+    raylab_cli::main(&ch05_antialiasing::CHAPTER)
 }

@@ -132,8 +132,8 @@ pub fn heatmap_image(
 /// Written as a struct so that a call site names every part:
 ///
 /// ```
-/// # use raylab::plot::heatmap::{ColourScale, HeatmapFigure};
-/// # use raylab::plot::colormap::Colormap;
+/// # use raylab_plot::heatmap::{ColourScale, HeatmapFigure};
+/// # use raylab_plot::colormap::Colormap;
 /// let counts = vec![1.0; 16 * 12];
 /// let image = HeatmapFigure {
 ///     title: "Bounces per pixel",
@@ -356,7 +356,7 @@ fn outline(canvas: &mut Canvas, x: u32, y: u32, w: u32, h: u32) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::plot::colormap::viridis;
+    use crate::colormap::viridis;
 
     /// Bounce counts 1..=10 rising left to right.
     fn ramp(width: usize, height: usize) -> Vec<f32> {

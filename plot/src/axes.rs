@@ -4,8 +4,8 @@
 //! Build a [`LinePlot`] step by step, then [`LinePlot::render`] it:
 //!
 //! ```
-//! # use raylab::plot::axes::{LinePlot, Series};
-//! # use raylab::plot::colour::series_colour;
+//! # use raylab_plot::axes::{LinePlot, Series};
+//! # use raylab_plot::colour::series_colour;
 //! let image = LinePlot::new("Pixels still changing")
 //!     .x_label("max depth")
 //!     .y_label("changed pixels")
@@ -650,7 +650,7 @@ impl Frame {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::plot::colour::series_colour;
+    use crate::colour::series_colour;
 
     const BLUE: Rgb = [31, 119, 180];
 

@@ -11,8 +11,8 @@ use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
 
 use notify::{RecursiveMode, Watcher};
 
-use crate::cli::{Chapter, CliError, Options, print_report, run};
-use crate::trace::Step;
+use crate::{Chapter, CliError, Options, print_report, run};
+use raylab::trace::Step;
 
 /// How long the file must stay quiet before it is read: editors often
 /// save in several steps (truncate, write, rename).
@@ -79,8 +79,9 @@ fn render_and_report<S: Step>(
     let report = run(chapter, options)?;
     if !options.quiet {
         println!("[{}] rendered {}", clock(), scene.display());
-        print_report(chapter, options, &report);
     }
+    // Quiet or not: it prints the tree --probe asked for.
+    print_report(chapter, options, &report);
     Ok(())
 }
 

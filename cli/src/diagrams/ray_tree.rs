@@ -4,14 +4,14 @@ use glam::Vec2;
 use image::RgbImage;
 
 use super::kind_colour;
-use crate::Vec3;
-use crate::camera::Camera;
-use crate::plot::colour::{AXIS, FRAME, GRID, TEXT, TEXT_MUTED, WHITE, mix};
-use crate::plot::{Anchor, Canvas, Rgb};
-use crate::ray::RayKind;
-use crate::scene::Scene;
-use crate::srgb::encode_channel;
-use crate::trace::TracedRay;
+use raylab::Vec3;
+use raylab::camera::Camera;
+use raylab::ray::RayKind;
+use raylab::scene::Scene;
+use raylab::srgb::encode_channel;
+use raylab::trace::TracedRay;
+use raylab_plot::colour::{AXIS, FRAME, GRID, TEXT, TEXT_MUTED, WHITE, mix};
+use raylab_plot::{Anchor, Canvas, Rgb};
 
 const WIDTH: u32 = 1240;
 const HEIGHT: u32 = 700;

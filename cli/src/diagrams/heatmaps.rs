@@ -2,8 +2,8 @@
 
 use image::RgbImage;
 
-use crate::plot::{Colormap, ColourScale, HeatmapFigure};
-use crate::render::Rendered;
+use raylab::render::Rendered;
+use raylab_plot::{Colormap, ColourScale, HeatmapFigure};
 
 /// A short description of the settings, for captions.
 pub fn settings_caption(binary: &str, rendered: &Rendered) -> String {
@@ -56,7 +56,7 @@ pub fn rays_figure(binary: &str, rendered: &Rendered) -> RgbImage {
         caption.push_str(&format!(
             " From {least} to {most} rays a pixel, {} in all: the sky is cheapest, \
              glass and mirrors the most expensive.",
-            crate::render::thousands(rendered.counts.total())
+            raylab::render::thousands(rendered.counts.total())
         ));
     }
     HeatmapFigure {

@@ -409,7 +409,7 @@ fn line_path(points: &[(f32, f32)]) -> Option<Path> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::plot::colour::{BLACK, TEXT, WHITE};
+    use crate::colour::{BLACK, TEXT, WHITE};
 
     const RED: Rgb = [220, 30, 30];
 

@@ -9,13 +9,13 @@ use std::path::{Path, PathBuf};
 
 use serde::Deserialize;
 
-use crate::Vec3;
-use crate::camera::Camera;
-use crate::light::{Sky, Sun};
-use crate::material::Material;
-use crate::plane::{Checker, Plane};
-use crate::scene::{Ground, Scene};
-use crate::sphere::Sphere;
+use raylab::Vec3;
+use raylab::camera::Camera;
+use raylab::light::{Sky, Sun};
+use raylab::material::Material;
+use raylab::plane::{Checker, Plane};
+use raylab::scene::{Ground, Scene};
+use raylab::sphere::Sphere;
 
 /// The largest scene file read, in bytes.
 pub const MAX_FILE_BYTES: u64 = 1024 * 1024;
@@ -343,7 +343,7 @@ fn nearest(key: &str, expected: &[String]) -> Option<String> {
 mod tests {
     use super::*;
 
-    const LAB: &str = include_str!("../scenes/lab.toml");
+    const LAB: &str = include_str!("../../scenes/lab.toml");
 
     fn error_of(text: &str) -> String {
         parse(text, Path::new("test.toml")).unwrap_err().to_string()
@@ -365,9 +365,9 @@ mod tests {
     #[test]
     fn the_other_scenes_are_valid() {
         for text in [
-            include_str!("../scenes/two-mirrors.toml"),
-            include_str!("../scenes/water-and-glass.toml"),
-            include_str!("../scenes/total-internal-reflection.toml"),
+            include_str!("../../scenes/two-mirrors.toml"),
+            include_str!("../../scenes/water-and-glass.toml"),
+            include_str!("../../scenes/total-internal-reflection.toml"),
         ] {
             parse(text, Path::new("scene.toml")).unwrap();
         }

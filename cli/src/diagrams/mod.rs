@@ -8,8 +8,8 @@ pub mod heatmaps;
 pub mod ray_tree;
 pub mod sweep;
 
-use crate::plot::Rgb;
-use crate::ray::RayKind;
+use raylab::ray::RayKind;
+use raylab_plot::Rgb;
 
 /// The colour of each kind of ray, the same in every diagram.
 pub fn kind_colour(kind: RayKind) -> Rgb {

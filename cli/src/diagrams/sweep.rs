@@ -7,8 +7,8 @@ use std::path::{Path, PathBuf};
 use image::RgbImage;
 
 use crate::output::{WriteError, save_png, save_text};
-use crate::plot::colour::SERIES;
-use crate::plot::{
+use raylab_plot::colour::SERIES;
+use raylab_plot::{
     Corner, LinePlot, Series, changed_pixels, magnified_difference, max_change, montage,
 };
 
