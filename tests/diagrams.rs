@@ -229,3 +229,58 @@ fn a_probe_outside_the_image_is_refused() {
         "{err}"
     );
 }
+
+#[test]
+fn the_glass_probe_folds_subtrees_too_faint_to_show_and_probe_full_lists_every_ray() {
+    let dir = tempfile::tempdir().unwrap();
+    let folded = run_small(&ch04_refraction::CHAPTER, dir.path(), &[])
+        .probe
+        .unwrap()
+        .1;
+    let full = run_small(&ch04_refraction::CHAPTER, dir.path(), &["--probe-full"])
+        .probe
+        .unwrap()
+        .1;
+    let rays: usize = full
+        .lines()
+        .next()
+        .and_then(|l| l.split(": ").nth(1))
+        .and_then(|l| l.split(' ').next())
+        .and_then(|n| n.parse().ok())
+        .expect("the first line counts the rays");
+    assert_eq!(full.lines().count(), 1 + rays, "one line a ray: {full}");
+    assert!(!full.contains("lists them"), "{full}");
+    assert!(
+        !full.contains("weight 0.0000") && !full.contains("0.0000)"),
+        "{full}"
+    );
+    assert!(
+        full.contains("e-"),
+        "the faint rays' numbers are legible: {full}"
+    );
+
+    // Every ray is either on a line of its own or counted in a fold.
+    let fold_lines: Vec<&str> = folded
+        .lines()
+        .filter(|l| l.contains("lists them"))
+        .collect();
+    assert!(!fold_lines.is_empty(), "{folded}");
+    let in_folds: usize = fold_lines
+        .iter()
+        .map(|l| {
+            let below = l.split(" and ").nth(1).unwrap().split(' ').next().unwrap();
+            1 + below.parse::<usize>().unwrap()
+        })
+        .sum();
+    let shown = folded.lines().count() - 1 - fold_lines.len();
+    assert_eq!(shown + in_folds, rays, "{folded}");
+    assert!(
+        folded.lines().count() < full.lines().count() * 2 / 3,
+        "{folded}"
+    );
+    // The first three levels, which make the glass, are never folded.
+    assert!(
+        folded.contains("refraction (depth 3, weight 0.4900) from"),
+        "{folded}"
+    );
+}

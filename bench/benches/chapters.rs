@@ -11,7 +11,7 @@
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use raylab::indicatif::ProgressBar;
-use raylab::{Camera, Scene, Step, render};
+use raylab::{Camera, Sampling, Scene, Settings, Step, render};
 use raylab_cli::{Chapter, Options};
 
 fn bench_chapter<S: Step>(c: &mut Criterion, chapter: &Chapter<S>) {
@@ -64,5 +64,38 @@ fn chapters(c: &mut Criterion) {
     bench_path_tracing(c);
 }
 
-criterion_group!(benches, chapters);
+/// Chapter 5 at 5 rays per pixel (the lab's) and at 64 (jittered), on a
+/// 200 × 150 image so that 64 rays stay quick: the throughput in rays per
+/// second must not fall as the count grows (nothing is allocated per ray,
+/// and an offset costs a hash and a few multiplications).
+/// `cargo bench -p raylab-bench -- spp` runs just these two, one after the other.
+fn rays_per_pixel(c: &mut Criterion) {
+    let (scene, camera) = (Scene::lab(), Camera::lab());
+    let hidden = ProgressBar::hidden();
+    let step = &ch05_antialiasing::CHAPTER.step;
+    let mut group = c.benchmark_group("spp 200x150");
+    group.sample_size(20);
+    for (name, sampling) in [
+        ("ch05 spp 5", Sampling::LAB_FIVE),
+        ("ch05 spp 64", Sampling::new(64, None, 0).expect("valid")),
+    ] {
+        let settings = Settings {
+            width: 200,
+            height: 150,
+            max_depth: 10,
+            epsilon: 1e-4,
+            sampling,
+        };
+        let rays = render(&scene, &camera, step, &settings, &hidden)
+            .counts
+            .total();
+        group.throughput(Throughput::Elements(rays));
+        group.bench_function(name, |b| {
+            b.iter(|| render(&scene, &camera, step, &settings, &hidden))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, chapters, rays_per_pixel);
 criterion_main!(benches);

@@ -23,10 +23,10 @@ use indicatif::{ProgressBar, ProgressStyle};
 use crate::diagrams::sweep::DepthSweep;
 use crate::diagrams::{heatmaps, ray_tree};
 use crate::output::{WriteError, save_png, save_text};
+use crate::probe_text::Listing;
+use crate::scene_file::SceneFileError;
 use raylab::camera::Camera;
 use raylab::probe::{self, ProbeTarget};
-
-use crate::scene_file::SceneFileError;
 use raylab::render::{Rendered, Settings, render, render_every_depth};
 use raylab::sampling::{MAX_SPP, Pattern, Sampling, SamplingError};
 use raylab::scene::Scene;
@@ -102,20 +102,26 @@ pub struct Options {
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
 
-    /// Print the ray tree of pixel X,Y (0,0 = top left) and draw it in ray-tree.png
+    /// Print the ray tree of pixel X,Y (0,0 = top left), write it to probe.txt and draw it in
+    /// ray-tree.png; always, even with --quiet or --no-diagrams. Subtrees too faint to change
+    /// the pixel are folded into one line each
     #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
     pub probe: Option<(u32, u32)>,
+
+    /// List every ray of the probe's tree, printed and in probe.txt: fold nothing
+    #[arg(long)]
+    pub probe_full: bool,
 
     /// Sweep the max depth from 1 to N into depth-sweep/ [default: --max-depth, in chapters 3-5]
     #[arg(long, value_name = "N", allow_negative_numbers = true,
           value_parser = clap::value_parser!(u32).range(1..=MAX_DEPTH_LIMIT as i64))]
     pub sweep: Option<u32>,
 
-    /// Write only render.png: no heat maps, ray tree or depth sweep
+    /// Write only render.png (and what --probe asks for): no heat maps, ray tree or depth sweep
     #[arg(long)]
     pub no_diagrams: bool,
 
-    /// Print nothing but errors: no progress bar, no summary
+    /// Print nothing but errors and the tree --probe asks for: no progress bar, no summary
     #[arg(long, short)]
     pub quiet: bool,
 }
@@ -306,7 +312,8 @@ pub struct Report {
     pub render_png: PathBuf,
     /// Every file written, `render.png` first.
     pub written: Vec<PathBuf>,
-    /// The probed pixel and its ray tree as text, when diagrams are drawn.
+    /// The probed pixel and its ray tree as text, when diagrams are drawn
+    /// or `--probe` asks for it.
     pub probe: Option<((u32, u32), String)>,
     /// The depth sweep's numbers and its time, when one was made.
     pub sweep: Option<(DepthSweep, std::time::Duration)>,
@@ -340,6 +347,7 @@ pub fn progress_bar(rows: u64, quiet: bool) -> ProgressBar {
 /// Render a chapter with these options and write `render.png`, then,
 /// unless `--no-diagrams`, its heat maps, its probe's ray tree and (in
 /// chapters that trace beyond depth 1, or with `--sweep`) the depth sweep.
+/// A pixel asked for with `--probe` is probed even with `--no-diagrams`.
 pub fn run<S: Step>(chapter: &Chapter<S>, options: &Options) -> Result<Report, CliError> {
     let settings = options.settings()?;
     // Read the scene before anything is written: a bad file writes nothing.
@@ -365,10 +373,47 @@ pub fn run<S: Step>(chapter: &Chapter<S>, options: &Options) -> Result<Report, C
         sweep: None,
     };
     if options.no_diagrams {
+        if let Some(pixel) = options.probe {
+            write_probe(chapter, options, &scene, &camera, pixel, &mut report)?;
+        }
         return Ok(report);
     }
     write_diagrams(chapter, options, &scene, &camera, &mut report)?;
     Ok(report)
+}
+
+/// Trace one pixel's ray tree again, logging every ray, and write it as a
+/// figure (`ray-tree.png`) and as text (`probe.txt`).
+fn write_probe<S: Step>(
+    chapter: &Chapter<S>,
+    options: &Options,
+    scene: &Scene,
+    camera: &Camera,
+    pixel: (u32, u32),
+    report: &mut Report,
+) -> Result<(), CliError> {
+    let settings = report.rendered.settings;
+    let trees = probe::probe(scene, camera, &chapter.step, &settings, pixel);
+    let title = match trees.len() {
+        1 => format!("{}: the ray tree of one pixel", chapter.binary),
+        n => format!("{}: the {n} ray trees of one pixel", chapter.binary),
+    };
+    let rays: Vec<_> = trees.iter().flat_map(|t| t.rays.iter().copied()).collect();
+    let figure = ray_tree::ray_tree_figure(scene, camera, &title, pixel, &rays);
+    let path = report.out_dir.join("ray-tree.png");
+    save_png(&figure, &path)?;
+    report.written.push(path);
+    let listing = if options.probe_full {
+        Listing::Full
+    } else {
+        Listing::Folded
+    };
+    let text = probe_text::format_tree(scene, pixel, &trees, listing);
+    let path = report.out_dir.join("probe.txt");
+    save_text(&text, &path)?;
+    report.written.push(path);
+    report.probe = Some((pixel, text));
+    Ok(())
 }
 
 fn write_diagrams<S: Step>(
@@ -404,19 +449,7 @@ fn write_diagrams<S: Step>(
         target.or(Some((settings.width / 2, settings.height / 2)))
     });
     if let Some(pixel) = pixel {
-        let trees = probe::probe(scene, camera, &chapter.step, &settings, pixel);
-        let title = match trees.len() {
-            1 => format!("{}: the ray tree of one pixel", chapter.binary),
-            n => format!("{}: the {n} ray trees of one pixel", chapter.binary),
-        };
-        let rays: Vec<_> = trees.iter().flat_map(|t| t.rays.iter().copied()).collect();
-        let figure = ray_tree::ray_tree_figure(scene, camera, &title, pixel, &rays);
-        png("ray-tree.png", &figure)?;
-        let text = probe_text::format_tree(scene, pixel, &trees);
-        let path = dir.join("probe.txt");
-        save_text(&text, &path)?;
-        report.written.push(path);
-        report.probe = Some((pixel, text));
+        write_probe(chapter, options, scene, camera, pixel, report)?;
     }
 
     let depth = options
@@ -444,7 +477,8 @@ fn write_diagrams<S: Step>(
 }
 
 /// Print what a run did: the summary line, the probe when asked for, the
-/// sweep's conclusion, and where the files are.
+/// sweep's conclusion, and where the files are. With `--quiet`, only the
+/// probe's tree when `--probe` asked for one.
 ///
 /// A reader that stops reading (`… | head -1`) is not an error: the files
 /// are written by then, so a closed standard output is left at that.
@@ -459,10 +493,15 @@ pub fn print_report<S: Step>(chapter: &Chapter<S>, options: &Options, report: &R
 
 /// The text [`print_report`] prints.
 fn report_text<S: Step>(chapter: &Chapter<S>, options: &Options, report: &Report) -> String {
-    let mut text = format!("{}: {}\n", chapter.binary, report.rendered);
-    if let (Some(_), Some((_, tree))) = (options.probe, &report.probe) {
-        text.push_str(tree);
+    let asked_tree = match (options.probe, &report.probe) {
+        (Some(_), Some((_, tree))) => tree.as_str(),
+        _ => "",
+    };
+    if options.quiet {
+        return asked_tree.to_owned();
     }
+    let mut text = format!("{}: {}\n", chapter.binary, report.rendered);
+    text.push_str(asked_tree);
     if let Some((sweep, elapsed)) = &report.sweep {
         text.push_str(&format!(
             "  depth sweep 1 to {} in {:.0} ms: no pixel changes by more than {} level after depth {}\n",
@@ -519,9 +558,8 @@ pub fn main<S: Step>(chapter: &Chapter<S>) -> ExitCode {
             Ok((options, report))
         });
     let result = result.map(|(options, report)| {
-        if !options.quiet {
-            print_report(chapter, &options, &report);
-        }
+        // Quiet or not: with --quiet the report is only what was asked for.
+        print_report(chapter, &options, &report);
     });
     exit(chapter.binary, result)
 }

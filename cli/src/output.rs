@@ -17,6 +17,10 @@ pub struct WriteError {
 
 /// Write `path` by writing a temporary file beside it and renaming it into
 /// place: a reader sees the old file or the whole new one, never a part.
+///
+/// The file gets the permissions of any new file of the user (0666 less
+/// the umask: 0644 usually), not the temporary file's private 0600, so a
+/// figure published with a web server or shared on a lab machine opens.
 pub fn write_atomically(
     path: &Path,
     write: impl FnOnce(&mut BufWriter<&mut File>) -> io::Result<()>,
@@ -31,11 +35,15 @@ pub fn write_atomically(
     };
     // The temporary file is deleted when dropped, so every early return
     // below cleans up after itself.
-    let mut temp = tempfile::Builder::new()
-        .prefix(".raylab-")
-        .suffix(".tmp")
-        .tempfile_in(dir)
-        .map_err(fail)?;
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(".raylab-").suffix(".tmp");
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        // The mode `File::create` asks for; the kernel takes the umask off.
+        builder.permissions(std::fs::Permissions::from_mode(0o666));
+    }
+    let mut temp = builder.tempfile_in(dir).map_err(fail)?;
     {
         let mut writer = BufWriter::new(temp.as_file_mut());
         write(&mut writer).map_err(fail)?;
@@ -78,6 +86,23 @@ mod tests {
         assert_eq!(back, image);
         let names: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
         assert_eq!(names.len(), 1, "only the PNG is left");
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_written_image_gets_the_permissions_of_any_new_file() {
+        use std::os::unix::fs::PermissionsExt;
+        let dir = tempfile::tempdir().unwrap();
+        // A file made the ordinary way shows what the umask allows, so the
+        // test holds under any umask (0644 under the usual 022).
+        let plain = dir.path().join("plain.txt");
+        File::create(&plain).unwrap();
+        let mode = |p: &Path| std::fs::metadata(p).unwrap().permissions().mode() & 0o777;
+        let path = dir.path().join("render.png");
+        save_png(&RgbImage::new(2, 2), &path).unwrap();
+        assert_eq!(mode(&path), mode(&plain), "{:o}", mode(&path));
+        save_text("x", &dir.path().join("probe.txt")).unwrap();
+        assert_eq!(mode(&dir.path().join("probe.txt")), mode(&plain));
     }
 
     #[test]

@@ -79,8 +79,9 @@ fn render_and_report<S: Step>(
     let report = run(chapter, options)?;
     if !options.quiet {
         println!("[{}] rendered {}", clock(), scene.display());
-        print_report(chapter, options, &report);
     }
+    // Quiet or not: it prints the tree --probe asked for.
+    print_report(chapter, options, &report);
     Ok(())
 }
 

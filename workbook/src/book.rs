@@ -7,8 +7,10 @@ use crate::JobError;
 /// Build the book in `book_dir` (its `book.toml` names the output
 /// folder); returns the path of its `index.html`.
 pub fn build(book_dir: &Path) -> Result<PathBuf, JobError> {
-    let book =
+    let mut book =
         mdbook_driver::MDBook::load(book_dir).map_err(|e| JobError::Book(format!("{e:#}")))?;
+    // After mdBook's own preprocessors, so included text is converted too.
+    book.with_preprocessor(crate::math::Formulas);
     book.build().map_err(|e| JobError::Book(format!("{e:#}")))?;
     Ok(book.build_dir_for("html").join("index.html"))
 }

@@ -2,8 +2,10 @@
 //! a small scale: render every chapter and every figure of the book into
 //! `book/src/figures/`, then build the book with mdBook.
 
+pub mod antialiasing;
 pub mod book;
 pub mod extras;
+pub mod math;
 
 use std::path::{Path, PathBuf};
 use std::time::Duration;
@@ -188,6 +190,7 @@ pub fn make_figures(
     save_text(&speed_table(&timings), &speed)?;
     written.push(speed);
     written.extend(extras::make_extras(&figures.join("extras"), size)?);
+    written.extend(antialiasing::make_figures(&figures.join("sampling"), size)?);
     written.extend(extras::make_scene_figures(
         &figures.join("scenes"),
         scenes,

@@ -88,7 +88,9 @@ fn the_book_builds_and_shows_only_figures_the_programs_make() {
     let temp = tempfile::tempdir().unwrap();
     let book = temp.path().join("book");
     std::fs::create_dir_all(book.join("src")).unwrap();
-    std::fs::copy(book_dir().join("book.toml"), book.join("book.toml")).unwrap();
+    for file in ["book.toml", "math.css"] {
+        std::fs::copy(book_dir().join(file), book.join(file)).unwrap();
+    }
     for page in pages(&book_dir().join("src")) {
         std::fs::copy(&page, book.join("src").join(page.file_name().unwrap())).unwrap();
     }
@@ -156,6 +158,87 @@ fn the_book_builds_and_shows_only_figures_the_programs_make() {
     }
     let ch4 = std::fs::read_to_string(book.join("build/ch04-refraction.html")).unwrap();
     assert!(ch4.contains("send_refraction"), "chapter 4 shows its code");
+    every_formula_is_mathml_and_no_page_needs_mathjax(&src, &book.join("build"));
+}
+
+/// The book reads offline: each page that writes a formula holds MathML,
+/// no raw TeX is left outside code, and no page loads MathJax.
+fn every_formula_is_mathml_and_no_page_needs_mathjax(src: &Path, build: &Path) {
+    let mut with_formulas = 0;
+    for page in pages(src) {
+        let name = page.file_stem().unwrap().to_string_lossy().into_owned();
+        if name == "SUMMARY" {
+            continue;
+        }
+        let markdown = std::fs::read_to_string(&page).unwrap();
+        let html = std::fs::read_to_string(build.join(format!("{name}.html"))).unwrap();
+        if markdown.contains(r"\\(") || markdown.contains(r"\\[") {
+            with_formulas += 1;
+            assert!(
+                html.contains("<math"),
+                "{name}: its formulas are not MathML"
+            );
+        }
+        let prose = without(&html, &["pre", "code", "script", "annotation"]);
+        for raw in [r"\(", r"\[", "$$"] {
+            assert!(!prose.contains(raw), "{name}: raw TeX `{raw}` is left");
+        }
+        if let Some(at) = tex_command(&prose) {
+            let context: String = prose[at.saturating_sub(40)..].chars().take(80).collect();
+            panic!("{name}: a TeX command outside a formula: {context}");
+        }
+        assert!(
+            !html.to_lowercase().contains("mathjax"),
+            "{name}: the page still mentions MathJax"
+        );
+    }
+    assert!(
+        with_formulas >= 8,
+        "the pages with formulas: {with_formulas}"
+    );
+}
+
+/// The text with every `<tag …>…</tag>` of the given names cut out.
+fn without(html: &str, tags: &[&str]) -> String {
+    let mut text = html.to_owned();
+    for tag in tags {
+        let (open, close) = (format!("<{tag}"), format!("</{tag}>"));
+        while let Some(start) = text.find(&open) {
+            let end = text[start..]
+                .find(&close)
+                .map_or(text.len(), |e| start + e + close.len());
+            text.replace_range(start..end, "");
+        }
+    }
+    text
+}
+
+/// Where a backslash followed by a letter (`\cdot`) is, if anywhere.
+fn tex_command(text: &str) -> Option<usize> {
+    let bytes = text.as_bytes();
+    (0..bytes.len().saturating_sub(1))
+        .find(|&i| bytes[i] == b'\\' && bytes[i + 1].is_ascii_alphabetic())
+}
+
+#[test]
+fn a_formula_that_does_not_convert_stops_the_build_naming_page_and_formula() {
+    let temp = tempfile::tempdir().unwrap();
+    let book = temp.path();
+    std::fs::create_dir_all(book.join("src")).unwrap();
+    std::fs::write(book.join("book.toml"), "[book]\ntitle = \"t\"\n").unwrap();
+    std::fs::write(
+        book.join("src/SUMMARY.md"),
+        "# Summary\n\n- [Bad](bad.md)\n",
+    )
+    .unwrap();
+    std::fs::write(
+        book.join("src/bad.md"),
+        "# Bad\n\nA good \\\\(x^2\\\\) and a bad \\\\(\\frac{a\\\\).\n",
+    )
+    .unwrap();
+    let error = build(book).unwrap_err().to_string();
+    assert!(error.contains("bad.md"), "{error}");
+    assert!(error.contains(r"\frac{a"), "{error}");
 }
 
 fn copy_tree(from: &Path, to: &Path) {

@@ -84,13 +84,49 @@ fn a_probe_prints_the_ray_tree() {
     );
     let stdout = String::from_utf8(output.stdout).unwrap();
     assert!(
-        stdout.contains("ray tree of pixel (20, 20): 1 rays, colour"),
+        stdout.contains("ray tree of pixel (20, 20): 1 ray, colour"),
         "{stdout}"
     );
     assert!(
         stdout.contains("primary (depth 1, weight 1.0000)"),
         "{stdout}"
     );
+}
+
+#[test]
+fn an_explicit_probe_is_answered_even_when_quiet_and_without_diagrams() {
+    let dir = tempfile::tempdir().unwrap();
+    let args = ["--width", "40", "--height", "30", "--probe", "20,20"];
+    let output = run(
+        &[&args[..], &["--quiet", "--no-diagrams"]].concat(),
+        dir.path(),
+    );
+    assert!(output.status.success(), "{output:?}");
+    let stdout = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        stdout.starts_with("ray tree of pixel (20, 20): 1 ray"),
+        "--quiet still prints the tree asked for, and only that: {stdout}"
+    );
+    assert!(!stdout.contains("Mrays/s"), "no summary: {stdout}");
+    let out = dir.path().join("out/ch01-ray-cast");
+    let probe = std::fs::read_to_string(out.join("probe.txt")).unwrap();
+    assert_eq!(probe, stdout, "probe.txt holds what was printed");
+    assert_eq!(
+        files_in(&out),
+        ["probe.txt", "ray-tree.png", "render.png"],
+        "--no-diagrams leaves out the heat maps, not the probe"
+    );
+}
+
+#[test]
+fn help_says_what_quiet_and_no_diagrams_do_to_a_probe() {
+    let output = run(&["--help"], &std::env::temp_dir());
+    let help = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        help.contains("even with --quiet or --no-diagrams"),
+        "{help}"
+    );
+    assert!(help.contains("--probe-full"), "{help}");
 }
 
 #[test]
@@ -117,11 +153,27 @@ fn bad_input_gets_one_clear_line_and_exit_code_2() {
         ),
         (&["--max-depth", "0"], "--max-depth"),
         (&["--max-depth", "65"], "1..=64"),
+        (&["--spp", "0"], "a whole number from 1 to 4096"),
+        (&["--spp", "5000"], "a whole number from 1 to 4096"),
+        (&["--spp", "2.5"], "--spp"),
         (
-            &["--spp", "3"],
-            "1 (the pixel centre) or 5 (the lab's five rays)",
+            &["--pattern", "grid", "--spp", "10"],
+            "--pattern grid needs a square number of rays per pixel (m × m), and 10 is not one: \
+             try --spp 9 or --spp 16",
         ),
-        (&["--spp", "0"], "--spp"),
+        (
+            &["--pattern", "jittered", "--spp", "5"],
+            "try --spp 4 or --spp 9",
+        ),
+        (
+            &["--pattern", "nope"],
+            "the pattern must be one of grid, jittered, random, halton",
+        ),
+        (
+            &["--seed", "-1"],
+            "the seed must be a whole number from 0 to",
+        ),
+        (&["--seed", "1e3"], "--seed"),
         (&["--epsilon", "NaN"], "--epsilon"),
         (&["--epsilon", "-1"], "from 0 to 0.1"),
         (
@@ -170,6 +222,8 @@ fn help_names_every_flag_with_the_chapters_defaults() {
         "--height",
         "--max-depth",
         "--spp",
+        "--pattern",
+        "--seed",
         "--epsilon",
         "--out",
         "--quiet",
@@ -177,6 +231,10 @@ fn help_names_every_flag_with_the_chapters_defaults() {
         assert!(help.contains(flag), "{flag} missing from --help");
     }
     assert!(help.contains("[default: out/ch01-ray-cast]"), "{help}");
+    assert!(
+        help.contains("jittered where N is a square, else halton"),
+        "--help names the default pattern: {help}"
+    );
 }
 
 /// `--watch`: a save renders again; a bad save keeps watching; Ctrl-C ends it.
