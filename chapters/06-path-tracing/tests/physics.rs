@@ -273,7 +273,8 @@ fn with_caustics_no_light_is_counted_twice() {
     // --caustics; only who counts the sunlight that mirrors and glass
     // bring to a diffuse surface changes.
     let names = Terms::NAMES;
-    for sun_size in [None, Some(5.0)] {
+    // A disc 30° across, so that paths from the eye often reach it through glass.
+    for sun_size in [None, Some(30.0)] {
         let base = PathSettings {
             sun_size,
             ..settings(40, 30, 16, 8)
