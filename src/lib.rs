@@ -40,6 +40,6 @@ pub use camera::Camera;
 pub use material::Material;
 pub use ray::{Ray, RayKind};
 pub use render::{Rendered, Settings, render, render_every_depth};
-pub use sampling::SamplePattern;
+pub use sampling::{Pattern, Sampling};
 pub use scene::{Hit, Object, Scene};
 pub use trace::{Step, Surface, Tracer};

@@ -18,6 +18,19 @@ impl Sky {
         (1.0 - t) * self.horizon + t * self.zenith
     }
     // ANCHOR_END: sky
+
+    // ANCHOR: sky_irradiance
+    /// The irradiance the whole sky gives a horizontal surface facing up
+    /// with nothing in its way: `π (0.2 · horizon + 0.8 · zenith)`.
+    ///
+    /// `E = ∫ sky(ω) cos θ dω` over the upper hemisphere. The sky depends
+    /// only on `μ = cos θ = d.y`, and `dω = dμ dφ`, so
+    /// `E = 2π ∫₀¹ ((1 − √μ) horizon + √μ zenith) μ dμ`
+    /// `  = 2π (horizon (1/2 − 2/5) + zenith · 2/5) = π (0.2 horizon + 0.8 zenith)`.
+    pub fn irradiance_facing_up(&self) -> Vec3 {
+        std::f32::consts::PI * (0.2 * self.horizon + 0.8 * self.zenith)
+    }
+    // ANCHOR_END: sky_irradiance
 }
 
 /// A directional light: infinitely far away, so every point sees it along
@@ -57,5 +70,29 @@ mod tests {
         let d = Vec3::new((1.0f32 - 0.0625).sqrt(), 0.25, 0.0);
         let mid = 0.5 * (LAB_SKY.horizon + LAB_SKY.zenith);
         assert!(LAB_SKY.radiance(d).abs_diff_eq(mid, 1e-6));
+    }
+
+    #[test]
+    fn the_lab_sky_gives_open_ground_an_irradiance_of_pi_times_0_37_0_54_0_88() {
+        let e = LAB_SKY.irradiance_facing_up();
+        let expected = std::f32::consts::PI * Vec3::new(0.37, 0.54, 0.88);
+        assert!(e.abs_diff_eq(expected, 1e-6), "{e}");
+    }
+
+    #[test]
+    fn the_sky_irradiance_closed_form_matches_a_numerical_integral() {
+        // Midpoint rule in μ = cos θ: E = 2π ∫ sky(μ) μ dμ.
+        let n = 100_000;
+        let mut sum = Vec3::ZERO;
+        for k in 0..n {
+            let mu = (k as f32 + 0.5) / n as f32;
+            let d = Vec3::new((1.0 - mu * mu).sqrt(), mu, 0.0);
+            sum += LAB_SKY.radiance(d) * mu;
+        }
+        let numeric = 2.0 * std::f32::consts::PI * sum / n as f32;
+        assert!(
+            numeric.abs_diff_eq(LAB_SKY.irradiance_facing_up(), 1e-4),
+            "{numeric}"
+        );
     }
 }

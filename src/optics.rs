@@ -1,4 +1,5 @@
-//! The two laws of geometric optics a Whitted ray tracer needs.
+//! The laws of geometric optics: the two a Whitted ray tracer needs, and
+//! the Fresnel reflectance that chapter 6's `--materials fresnel` adds.
 
 use crate::Vec3;
 
@@ -28,6 +29,29 @@ pub fn refract(i: Vec3, n: Vec3, eta: f32) -> Option<Vec3> {
     Some(eta * i - (eta * cos_i + k.sqrt()) * n)
 }
 // ANCHOR_END: refract
+
+// ANCHOR: fresnel
+/// The exact Fresnel reflectance of unpolarised light at a smooth
+/// dielectric interface: the share of the light that is reflected, the rest
+/// being refracted. `cos_i` is the cosine of the angle between the incoming
+/// ray and the normal (either sign), `eta` = n₁/n₂ as for [`refract`].
+///
+/// `F = (R_s + R_p) / 2`, the mean of the two polarisations:
+/// `R_s = ((η cos θᵢ − cos θₜ) / (η cos θᵢ + cos θₜ))²` and
+/// `R_p = ((η cos θₜ − cos θᵢ) / (η cos θₜ + cos θᵢ))²`, with
+/// `sin θₜ = η sin θᵢ` (Snell). Under total internal reflection it is 1.
+pub fn fresnel(cos_i: f32, eta: f32) -> f32 {
+    let cos_i = cos_i.abs().min(1.0);
+    let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+    if sin2_t >= 1.0 {
+        return 1.0; // no refracted direction: everything is reflected
+    }
+    let cos_t = (1.0 - sin2_t).sqrt();
+    let r_s = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    let r_p = (eta * cos_t - cos_i) / (eta * cos_t + cos_i);
+    0.5 * (r_s * r_s + r_p * r_p)
+}
+// ANCHOR_END: fresnel
 
 #[cfg(test)]
 mod tests {
@@ -78,5 +102,67 @@ mod tests {
         // Just below the critical angle the ray still gets out.
         let (s, c) = 41.5f32.to_radians().sin_cos();
         assert!(refract(Vec3::new(s, c, 0.0), Vec3::NEG_Y, 1.5).is_some());
+    }
+
+    #[test]
+    fn glass_reflects_four_percent_head_on() {
+        assert!((fresnel(1.0, 1.0 / 1.5) - 0.04).abs() < 1e-6);
+        // The same from inside: reciprocity.
+        assert!((fresnel(1.0, 1.5) - 0.04).abs() < 1e-6);
+    }
+
+    #[test]
+    fn glass_reflects_5_024_percent_at_45_degrees() {
+        let f = fresnel(45f32.to_radians().cos(), 1.0 / 1.5);
+        assert!((f - 0.05024).abs() < 1e-5, "{f}");
+    }
+
+    #[test]
+    fn near_grazing_glass_reflects_45_931_percent_where_schlick_says_48_881() {
+        let f = fresnel(0.141_067, 1.0 / 1.5);
+        assert!((f - 0.45931).abs() < 1e-5, "{f}");
+        let schlick = 0.04 + 0.96 * (1.0f32 - 0.141_067).powi(5);
+        assert!((schlick - 0.48881).abs() < 1e-5, "{schlick}");
+    }
+
+    #[test]
+    fn fresnel_reflectance_is_one_under_total_internal_reflection() {
+        // Inside glass at 45°, beyond the critical angle of 41.81°.
+        assert_eq!(fresnel(45f32.to_radians().cos(), 1.5), 1.0);
+        assert_eq!(
+            refract(Vec3::new(1.0, 1.0, 0.0).normalize(), Vec3::NEG_Y, 1.5),
+            None
+        );
+    }
+
+    #[test]
+    fn reflected_and_transmitted_shares_add_up_to_one_at_every_angle() {
+        // T is what the interface does not reflect: check it by the energy
+        // flux of the refracted beam, T = (cos θₜ / (η cos θᵢ)) · |t|²
+        // averaged over the two polarisations, from the amplitude
+        // coefficients t_s = 2η cos θᵢ / (η cos θᵢ + cos θₜ) and
+        // t_p = 2η cos θᵢ / (η cos θₜ + cos θᵢ).
+        for eta in [1.0 / 1.5, 1.5, 1.0 / 1.33] {
+            for step in 0..=100 {
+                let cos_i = step as f32 / 100.0;
+                let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+                let r = fresnel(cos_i, eta);
+                assert!((0.0..=1.0).contains(&r), "eta {eta}, cos {cos_i}: {r}");
+                if sin2_t >= 1.0 {
+                    assert_eq!(r, 1.0);
+                    continue;
+                }
+                let cos_t = (1.0 - sin2_t).sqrt();
+                let t_s = 2.0 * eta * cos_i / (eta * cos_i + cos_t);
+                let t_p = 2.0 * eta * cos_i / (eta * cos_t + cos_i);
+                let t = cos_t / (eta * cos_i).max(1e-30) * 0.5 * (t_s * t_s + t_p * t_p);
+                if cos_i > 0.0 {
+                    assert!(
+                        (r + t - 1.0).abs() < 1e-4,
+                        "eta {eta}, cos {cos_i}: R {r} + T {t}"
+                    );
+                }
+            }
+        }
     }
 }

@@ -50,7 +50,7 @@ pub struct SampleTree {
 }
 
 /// The ray trees of pixel `(x, y)`, one per sample of the pattern: one
-/// tree with one sample per pixel, five with the lab's five rays.
+/// tree with one sample per pixel, five with the lab's five rays, N with N.
 pub fn probe<S: Step + ?Sized>(
     scene: &Scene,
     camera: &Camera,
@@ -59,10 +59,9 @@ pub fn probe<S: Step + ?Sized>(
     (x, y): (u32, u32),
 ) -> Vec<SampleTree> {
     settings
-        .pattern
-        .offsets()
-        .iter()
-        .map(|&offset| {
+        .sampling
+        .offsets((x, y))
+        .map(|offset| {
             let ray = camera.ray(x, y, offset, settings.width, settings.height);
             let mut tracer =
                 Tracer::new(scene, step, settings.max_depth, settings.epsilon).with_log();

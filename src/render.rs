@@ -10,11 +10,11 @@ use crate::Vec3;
 use crate::camera::Camera;
 use crate::linear_image::LinearImage;
 use crate::ray::RayKind;
-use crate::sampling::SamplePattern;
+use crate::sampling::Sampling;
 use crate::scene::Scene;
 use crate::trace::{RAY_BUDGET, RayCounts, Step, Tracer};
 
-/// How to render: the image size and the limits of the ray tree.
+/// How to render: the image size, the limits of the ray tree and the samples.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Settings {
     pub width: u32,
@@ -23,7 +23,8 @@ pub struct Settings {
     pub max_depth: u32,
     /// How far secondary and shadow rays start from their surface.
     pub epsilon: f32,
-    pub pattern: SamplePattern,
+    /// How many rays per pixel, where, and the seed of their random choices.
+    pub sampling: Sampling,
 }
 
 /// A rendered image, with what the renderer did to make it.
@@ -49,12 +50,13 @@ struct PixelResult {
     colour: Vec3,
     deepest: u8,
     rays: u32,
-    over_budget: u8,
+    over_budget: u32,
 }
 
 // ANCHOR: pixel
 /// A pixel's colour: the plain average of its samples' colours, in linear
-/// light, summed in the pattern's order and divided by their number.
+/// light, summed in sample order and divided by their number. Nothing is
+/// allocated: each offset is computed from (seed, pixel, sample) on the spot.
 fn render_pixel<S: Step + ?Sized>(
     tracer: &mut Tracer<'_, S>,
     camera: &Camera,
@@ -63,15 +65,15 @@ fn render_pixel<S: Step + ?Sized>(
 ) -> PixelResult {
     let mut sum = Vec3::ZERO;
     let mut result = PixelResult::default();
-    for &offset in settings.pattern.offsets() {
+    for offset in settings.sampling.offsets((i, j)) {
         let ray = camera.ray(i, j, offset, settings.width, settings.height);
         let traced = tracer.trace(ray);
         sum += traced.colour;
         result.deepest = result.deepest.max(traced.deepest as u8);
         result.rays += traced.rays;
-        result.over_budget += u8::from(traced.over_budget);
+        result.over_budget += u32::from(traced.over_budget);
     }
-    result.colour = sum / settings.pattern.len() as f32;
+    result.colour = sum / settings.sampling.spp() as f32;
     result
 }
 // ANCHOR_END: pixel
@@ -171,11 +173,8 @@ impl fmt::Display for Settings {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "{}×{}, {} spp, max depth {}",
-            self.width,
-            self.height,
-            self.pattern.len(),
-            self.max_depth
+            "{}×{}, {}, max depth {}",
+            self.width, self.height, self.sampling, self.max_depth
         )
     }
 }
@@ -249,7 +248,7 @@ pub fn render_every_depth<S: Step + ?Sized>(
 ) -> Vec<LinearImage> {
     let (width, height) = (settings.width as usize, settings.height as usize);
     let depths = settings.max_depth as usize;
-    let samples = settings.pattern.len() as f32;
+    let samples = settings.sampling.spp() as f32;
     // Pixel by pixel, the colours at depth 1, 2, … side by side.
     let mut colours = vec![Vec3::ZERO; width * height * depths];
     colours
@@ -259,9 +258,9 @@ pub fn render_every_depth<S: Step + ?Sized>(
             || Tracer::new(scene, step, settings.max_depth, settings.epsilon).with_depth_colours(),
             |tracer, (j, row)| {
                 for (i, pixel) in row.chunks_mut(depths).enumerate() {
-                    for &offset in settings.pattern.offsets() {
-                        let ray =
-                            camera.ray(i as u32, j as u32, offset, settings.width, settings.height);
+                    let (i, j) = (i as u32, j as u32);
+                    for offset in settings.sampling.offsets((i, j)) {
+                        let ray = camera.ray(i, j, offset, settings.width, settings.height);
                         tracer.trace(ray);
                         for (d, sum) in pixel.iter_mut().enumerate() {
                             *sum += tracer

@@ -1,7 +1,7 @@
 //! How the chapters relate: each one changes only what its step adds.
 
 use raylab::indicatif::ProgressBar;
-use raylab::{Camera, Rendered, SamplePattern, Scene, Settings, Step, Tracer, Vec3, render};
+use raylab::{Camera, Rendered, Sampling, Scene, Settings, Step, Tracer, Vec3, render};
 
 fn settings(max_depth: u32, spp: u32) -> Settings {
     Settings {
@@ -9,7 +9,7 @@ fn settings(max_depth: u32, spp: u32) -> Settings {
         height: 60,
         max_depth,
         epsilon: 1e-4,
-        pattern: SamplePattern::with_samples(spp).unwrap(),
+        sampling: Sampling::new(spp, None, 0).unwrap(),
     }
 }
 

@@ -5,7 +5,8 @@ use std::path::Path;
 
 use ch07_eight_rays::{EightRays, Like, render::render_waves};
 use raylab::indicatif::ProgressBar;
-use raylab::{Camera, RayKind, SamplePattern, Scene, Settings, Step, render};
+use raylab::sampling::Pattern;
+use raylab::{Camera, RayKind, Sampling, Scene, Settings, Step, render};
 
 /// The scalar chapter that `like` imitates, as a step.
 fn scalar_step(like: Like) -> &'static dyn Step {
@@ -24,7 +25,7 @@ fn settings(like: Like, (width, height): (u32, u32)) -> Settings {
         height,
         max_depth,
         epsilon: 1e-4,
-        pattern: SamplePattern::with_samples(spp).expect("a chapter's own spp"),
+        sampling: Sampling::new(spp, None, 0).expect("a chapter's own spp"),
     }
 }
 
@@ -81,13 +82,28 @@ fn other_depths_and_one_ray_per_pixel_are_the_same() {
         let mut s = settings(Like::AntiAliasing, (120, 90));
         s.max_depth = max_depth;
         assert_same(Like::AntiAliasing, &scene, &camera, &s);
-        s.pattern = SamplePattern::PIXEL_CENTRE;
+        s.sampling = Sampling::PIXEL_CENTRE;
         assert_same(Like::AntiAliasing, &scene, &camera, &s);
     }
     // Glass seen by a chapter without shadows: every feature is separate.
     let mut s = settings(Like::Reflection, (120, 90));
     s.max_depth = 3;
     assert_same(Like::Reflection, &scene, &camera, &s);
+}
+
+#[test]
+fn every_rays_per_pixel_pattern_gives_chapter_5s_bytes_for_the_same_seed() {
+    let (scene, camera) = (Scene::lab(), Camera::lab());
+    for (spp, pattern, seed) in [
+        (16, Pattern::Grid, 0),
+        (16, Pattern::Jittered, 7),
+        (9, Pattern::Random, 3),
+        (12, Pattern::Halton, 11),
+    ] {
+        let mut s = settings(Like::AntiAliasing, (45, 33));
+        s.sampling = Sampling::new(spp, Some(pattern), seed).expect("a valid pattern");
+        assert_same(Like::AntiAliasing, &scene, &camera, &s);
+    }
 }
 
 #[test]

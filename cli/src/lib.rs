@@ -28,7 +28,7 @@ use crate::scene_file::SceneFileError;
 use raylab::camera::Camera;
 use raylab::probe::{self, ProbeTarget};
 use raylab::render::{Rendered, Settings, render_every_depth};
-use raylab::sampling::SamplePattern;
+use raylab::sampling::{MAX_SPP, Pattern, Sampling, SamplingError};
 use raylab::scene::Scene;
 use raylab::stack::MAX_DEPTH_LIMIT;
 use raylab::trace::Step;
@@ -72,9 +72,18 @@ pub struct Options {
           value_parser = clap::value_parser!(u32).range(1..=MAX_DEPTH_LIMIT as i64))]
     pub max_depth: u32,
 
-    /// Rays per pixel: 1 (the pixel centre) or 5 (the lab's five rays)
+    /// Rays per pixel, 1 to 4096: 1 is the pixel centre and 5 the lab's five rays, unless --pattern is given
     #[arg(long, value_name = "N", value_parser = parse_spp, allow_negative_numbers = true)]
     pub spp: u32,
+
+    /// Where a pixel's rays go: grid (N = m²), jittered (N = m²), random or halton [default: for --spp other than 1 and 5, jittered where N is a square, else halton]
+    #[arg(long, value_name = "PATTERN", value_parser = parse_pattern)]
+    pub pattern: Option<Pattern>,
+
+    /// The seed of every random choice: the same seed gives the same image, on any number of cores
+    #[arg(long, value_name = "S", default_value_t = 0, value_parser = parse_seed,
+          allow_negative_numbers = true)]
+    pub seed: u64,
 
     /// How far shadow and secondary rays start from their surface (try 0 for shadow acne)
     #[arg(long, value_name = "DISTANCE", default_value_t = 1e-4, value_parser = parse_epsilon,
@@ -127,17 +136,25 @@ fn parse_pixel(text: &str) -> Result<(u32, u32), String> {
 }
 
 fn parse_spp(text: &str) -> Result<u32, String> {
-    let allowed = || {
-        let counts: Vec<String> = SamplePattern::ALL
-            .iter()
-            .map(|p| format!("{} ({})", p.len(), p.name()))
-            .collect();
-        counts.join(" or ")
-    };
     match text.parse::<u32>() {
-        Ok(n) if SamplePattern::with_samples(n).is_some() => Ok(n),
-        _ => Err(format!("rays per pixel must be {}", allowed())),
+        Ok(n) if (1..=MAX_SPP).contains(&n) => Ok(n),
+        _ => Err(format!(
+            "rays per pixel must be a whole number from 1 to {MAX_SPP} \
+             (1 is the pixel centre, 5 the lab's five rays)"
+        )),
     }
+}
+
+fn parse_pattern(text: &str) -> Result<Pattern, String> {
+    Pattern::from_name(text).ok_or_else(|| {
+        let names: Vec<&str> = Pattern::ALL.iter().map(|p| p.name()).collect();
+        format!("the pattern must be one of {}", names.join(", "))
+    })
+}
+
+fn parse_seed(text: &str) -> Result<u64, String> {
+    text.parse::<u64>()
+        .map_err(|_| format!("the seed must be a whole number from 0 to {}", u64::MAX))
 }
 
 fn parse_epsilon(text: &str) -> Result<f32, String> {
@@ -170,6 +187,8 @@ pub enum CliError {
     Write(#[from] WriteError),
     #[error("{0}")]
     Scene(#[from] SceneFileError),
+    #[error("{0}")]
+    Sampling(#[from] SamplingError),
     #[error("--watch needs --scene FILE: it renders again when that file is saved")]
     WatchNeedsScene,
     #[error("cannot watch the scene file: {0}")]
@@ -185,30 +204,61 @@ pub enum CliError {
     },
 }
 
+/// What the shared command line needs to know of a program: its name, its
+/// line of help and its defaults. Every [`Chapter`] has one; a chapter that
+/// does not render through the Whitted [`Step`] (chapter 6, a path tracer)
+/// names its own, adds its own flags to [`Options::command`] and ends with
+/// [`exit`], so that its command line and its errors are the same as every
+/// other chapter's.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Program {
+    pub binary: &'static str,
+    pub about: &'static str,
+    pub max_depth: u32,
+    pub spp: u32,
+}
+
+impl<S: Step> Chapter<S> {
+    /// This chapter's name and defaults on the command line.
+    pub fn program(&self) -> Program {
+        Program {
+            binary: self.binary,
+            about: self.about,
+            max_depth: self.max_depth,
+            spp: self.spp,
+        }
+    }
+}
+
 impl Options {
+    /// The shared flags, with a program's name and defaults.
+    pub fn command(program: &Program) -> clap::Command {
+        <Options as CommandFactory>::command()
+            .name(program.binary)
+            .bin_name(program.binary)
+            .about(program.about)
+            .mut_arg("max_depth", |a| {
+                a.default_value(program.max_depth.to_string())
+                    .required(false)
+            })
+            .mut_arg("spp", |a| {
+                a.default_value(program.spp.to_string()).required(false)
+            })
+            .mut_arg("out", |a| {
+                a.help(format!(
+                    "Folder to write into [default: out/{}]",
+                    program.binary
+                ))
+            })
+    }
+
     /// The options of a chapter's program, parsed from `args` (the first
     /// one is the program's name), with that chapter's defaults.
     pub fn parse_for<S: Step>(
         chapter: &Chapter<S>,
         args: impl IntoIterator<Item = impl Into<OsString> + Clone>,
     ) -> Result<Self, clap::Error> {
-        let command = Options::command()
-            .name(chapter.binary)
-            .bin_name(chapter.binary)
-            .about(chapter.about)
-            .mut_arg("max_depth", |a| {
-                a.default_value(chapter.max_depth.to_string())
-                    .required(false)
-            })
-            .mut_arg("spp", |a| {
-                a.default_value(chapter.spp.to_string()).required(false)
-            })
-            .mut_arg("out", |a| {
-                a.help(format!(
-                    "Folder to write into [default: out/{}]",
-                    chapter.binary
-                ))
-            });
+        let command = Options::command(&chapter.program());
         Options::from_arg_matches(&command.try_get_matches_from(args)?)
     }
 
@@ -249,7 +299,7 @@ impl Options {
             height: self.height,
             max_depth: self.max_depth,
             epsilon: self.epsilon,
-            pattern: SamplePattern::with_samples(self.spp).expect("checked when parsed"),
+            sampling: Sampling::new(self.spp, self.pattern, self.seed)?,
         })
     }
 }
@@ -479,7 +529,7 @@ fn report_text<S: Step>(chapter: &Chapter<S>, options: &Options, report: &Report
 }
 
 /// Turn a clap error into the one line the learner sees.
-fn usage_line(error: &clap::Error) -> String {
+pub fn usage_line(error: &clap::Error) -> String {
     let text = error.render().to_string();
     let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
     let first = lines.next().unwrap_or("invalid arguments");
@@ -518,14 +568,20 @@ pub fn main_with_args<S: Step>(
             let report = run(chapter, &options).map_err(Some)?;
             Ok((options, report))
         });
+    let result = result.map(|(options, report)| {
+        // Quiet or not: with --quiet the report is only what was asked for.
+        print_report(chapter, &options, &report);
+    });
+    exit(chapter.binary, result)
+}
+
+/// The exit of every chapter program: success, a clean stop (`--help`,
+/// the end of `--watch`: `Err(None)`), or one line on stderr and code 2.
+pub fn exit(binary: &str, result: Result<(), Option<CliError>>) -> ExitCode {
     match result {
-        Ok((options, report)) => {
-            print_report(chapter, &options, &report);
-            ExitCode::SUCCESS
-        }
-        Err(None) => ExitCode::SUCCESS,
+        Ok(()) | Err(None) => ExitCode::SUCCESS,
         Err(Some(error)) => {
-            eprintln!("{}: error: {error}", chapter.binary);
+            eprintln!("{binary}: error: {error}");
             ExitCode::from(2)
         }
     }

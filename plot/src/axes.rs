@@ -108,6 +108,8 @@ pub struct LinePlot {
     y_range: Option<(f64, f64)>,
     /// `Some(floor)` for a log y axis; values below `floor` are drawn at it.
     log_y_floor: Option<f64>,
+    /// Whether the x axis is logarithmic (every x must then be positive).
+    log_x: bool,
     integer_x_ticks: bool,
     series: Vec<Series>,
     markers: Vec<VerticalMarker>,
@@ -124,6 +126,7 @@ impl LinePlot {
             x_range: None,
             y_range: None,
             log_y_floor: None,
+            log_x: false,
             integer_x_ticks: false,
             series: Vec::new(),
             markers: Vec::new(),
@@ -163,6 +166,13 @@ impl LinePlot {
         // A non-positive floor would bring the zero problem straight back.
         let floor = if floor > 0.0 { floor } else { 1.0 };
         self.log_y_floor = Some(floor);
+        self
+    }
+
+    /// Makes the x axis logarithmic, with ticks at powers of ten, for
+    /// data whose x values are all positive (a sample count, say).
+    pub fn log_x(mut self) -> LinePlot {
+        self.log_x = true;
         self
     }
 
@@ -282,12 +292,20 @@ impl LinePlot {
                 .iter()
                 .flat_map(|s| s.points.iter().map(|p| p.0));
             let marker_xs = self.markers.iter().map(|m| m.x);
-            padded_range(xs.chain(marker_xs))
+            if self.log_x {
+                decade_range(xs.chain(marker_xs), f64::MIN_POSITIVE)
+            } else {
+                padded_range(xs.chain(marker_xs))
+            }
         });
         Scale {
             min,
-            max,
-            log: false,
+            max: if self.log_x && max <= min {
+                min * 10.0
+            } else {
+                max
+            },
+            log: self.log_x,
         }
     }
 

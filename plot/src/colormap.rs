@@ -17,6 +17,10 @@ pub enum Colormap {
     /// Black through purple and orange to pale yellow; good when "zero"
     /// should look like nothing, as in difference images.
     Magma,
+    /// Blue through light grey to red (Moreland's "cool to warm"), for
+    /// signed values: 0.5 is zero, below it blue, above it red, with equal
+    /// lightness at equal distances either side.
+    Diverging,
 }
 
 impl Colormap {
@@ -25,6 +29,7 @@ impl Colormap {
         match self {
             Colormap::Viridis => viridis(t),
             Colormap::Magma => magma(t),
+            Colormap::Diverging => diverging(t),
         }
     }
 }
@@ -37,6 +42,36 @@ pub fn viridis(t: f32) -> Rgb {
 /// matplotlib's magma at `t` in `[0, 1]` (clamped; NaN gives the low end).
 pub fn magma(t: f32) -> Rgb {
     sample_table(&MAGMA, t)
+}
+
+/// Kenneth Moreland's cool-to-warm map ("Diverging Color Maps for
+/// Scientific Visualization", 2009), from his published 33-entry table
+/// at every eighth entry: blue at 0, light grey at 0.5, red at 1.
+const COOL_WARM: [[u8; 3]; 9] = [
+    [59, 76, 192],
+    [98, 130, 234],
+    [141, 176, 254],
+    [184, 208, 249],
+    [221, 221, 221],
+    [245, 196, 173],
+    [244, 154, 123],
+    [222, 96, 77],
+    [180, 4, 38],
+];
+
+/// The diverging map at `t` in `[0, 1]` (clamped; NaN gives the middle,
+/// "no difference").
+pub fn diverging(t: f32) -> Rgb {
+    let t = if t.is_nan() { 0.5 } else { t.clamp(0.0, 1.0) };
+    let position = t * 8.0;
+    let below = (position.floor() as usize).min(7);
+    let fraction = position - below as f32;
+    let (a, b) = (COOL_WARM[below], COOL_WARM[below + 1]);
+    let channel = |i: usize| {
+        let value = f32::from(a[i]) + (f32::from(b[i]) - f32::from(a[i])) * fraction;
+        value.round() as u8
+    };
+    [channel(0), channel(1), channel(2)]
 }
 
 /// Reads a colour table at fraction `t`, blending linearly between the two
@@ -104,6 +139,23 @@ mod tests {
         let (a, b) = (VIRIDIS[0], VIRIDIS[1]);
         for i in 0..3 {
             assert!(mid[i] >= a[i].min(b[i]) && mid[i] <= a[i].max(b[i]));
+        }
+    }
+
+    #[test]
+    fn the_diverging_map_is_grey_at_zero_blue_below_and_red_above() {
+        assert_eq!(diverging(0.5), [221, 221, 221]);
+        assert_eq!(diverging(f32::NAN), [221, 221, 221]);
+        assert_eq!(diverging(0.0), [59, 76, 192]);
+        assert_eq!(diverging(1.0), [180, 4, 38]);
+        let luma = |c: Rgb| 0.299 * c[0] as f32 + 0.587 * c[1] as f32 + 0.114 * c[2] as f32;
+        for i in 1..=8 {
+            let d = i as f32 / 16.0;
+            let (cool, warm) = (diverging(0.5 - d), diverging(0.5 + d));
+            assert!(cool[2] > cool[0] && warm[0] > warm[2], "{cool:?} {warm:?}");
+            // Both sides darken away from the middle, at about the same rate.
+            assert!(luma(cool) < 221.0 && luma(warm) < 221.0);
+            assert!((luma(cool) - luma(warm)).abs() < 30.0, "{cool:?} {warm:?}");
         }
     }
 }

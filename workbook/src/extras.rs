@@ -5,7 +5,8 @@ use std::path::{Path, PathBuf};
 
 use image::RgbImage;
 use raylab::indicatif::ProgressBar;
-use raylab::{Camera, SamplePattern, Scene, Settings, Step, render};
+use raylab::sampling::LAB_FIVE;
+use raylab::{Camera, Sampling, Scene, Settings, Step, render};
 use raylab_cli::output::save_png;
 use raylab_plot::colour::{AXIS, GRID, TEXT, TEXT_MUTED, WHITE};
 use raylab_plot::{Anchor, Canvas};
@@ -29,7 +30,7 @@ fn settings(size: Size, max_depth: u32, spp: u32, epsilon: f32) -> Settings {
         height: size.height,
         max_depth,
         epsilon,
-        pattern: SamplePattern::with_samples(spp).expect("1 or 5"),
+        sampling: Sampling::new(spp, None, 0).expect("1 or 5"),
     }
 }
 
@@ -216,7 +217,7 @@ fn shadow_offset_diagram() -> RgbImage {
 }
 
 /// The lab's five sample positions inside one pixel, numbered in the order
-/// they are summed: read from `SamplePattern::LAB_FIVE` itself.
+/// they are summed: read from `raylab::sampling::LAB_FIVE` itself.
 fn five_samples_diagram() -> RgbImage {
     let (w, h) = (520, 520);
     let (left, top, side) = (90.0, 70.0, 360.0);
@@ -247,7 +248,7 @@ fn five_samples_diagram() -> RgbImage {
         4.0,
     );
     canvas.stroke_rect(left, top, side, side, AXIS, 2.0);
-    for (n, &(sx, sy)) in SamplePattern::LAB_FIVE.offsets().iter().enumerate() {
+    for (n, &(sx, sy)) in LAB_FIVE.iter().enumerate() {
         let centre = (left + sx * side, top + sy * side);
         canvas.circle(centre, 16.0, Some([0, 114, 178]), None);
         canvas.text(

@@ -2,6 +2,7 @@
 //! a small scale: render every chapter and every figure of the book into
 //! `book/src/figures/`, then build the book with mdBook.
 
+pub mod antialiasing;
 pub mod book;
 pub mod extras;
 pub mod learn_figures;
@@ -114,6 +115,31 @@ pub fn speed_table(timings: &[Timing]) -> String {
     text
 }
 
+/// Chapter 6's run for the book: half the chapters' size each way, 64
+/// paths per pixel, with caustics, as
+/// `cargo run --release -p ch06-path-tracing -- --width 400 --height 300
+/// --spp 64 --caustics --out book/src/figures/ch06-path-tracing` (about
+/// 8 million paths: a few seconds on two cores).
+fn path_tracing_figures(figures: &Path, size: Size, quiet: bool) -> Result<Vec<PathBuf>, JobError> {
+    use ch06_path_tracing::run;
+    let out = figures.join(run::PROGRAM.binary);
+    let args = [
+        run::PROGRAM.binary.to_owned(),
+        format!("--width={}", size.width / 2),
+        format!("--height={}", size.height / 2),
+        "--spp=64".to_owned(),
+        "--caustics".to_owned(),
+        format!("--out={}", out.display()),
+    ];
+    let (mut options, flags) = run::parse(args).map_err(|e| CliError::Usage(e.to_string()))?;
+    options.quiet = quiet;
+    let report = run::run(&options, &flags)?;
+    if !quiet {
+        print!("{}", run::report_text(&report));
+    }
+    Ok(report.written)
+}
+
 /// Every figure the book shows, written under `figures`; returns the files.
 /// `scenes` is the folder of scene files (`scenes/` at the workspace root).
 pub fn make_figures(
@@ -160,6 +186,7 @@ pub fn make_figures(
         quiet,
         t,
     )?);
+    written.extend(path_tracing_figures(figures, size, quiet)?);
     written.extend(chapter_figures(
         &ch07_eight_rays::chapter(ch07_eight_rays::Like::AntiAliasing),
         figures,
@@ -171,6 +198,7 @@ pub fn make_figures(
     save_text(&speed_table(&timings), &speed)?;
     written.push(speed);
     written.extend(extras::make_extras(&figures.join("extras"), size)?);
+    written.extend(antialiasing::make_figures(&figures.join("sampling"), size)?);
     written.extend(learn_figures::make_learn_figures(&figures.join("learn"))?);
     written.extend(extras::make_scene_figures(
         &figures.join("scenes"),
@@ -190,7 +218,7 @@ pub fn make_figures(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use raylab::SamplePattern;
+    use raylab::Sampling;
 
     #[test]
     fn the_speed_table_has_a_row_per_run_with_grouped_rays_and_milliseconds() {
@@ -199,7 +227,7 @@ mod tests {
             height: 600,
             max_depth: 10,
             epsilon: 1e-4,
-            pattern: SamplePattern::with_samples(1).unwrap(),
+            sampling: Sampling::PIXEL_CENTRE,
         };
         let timing = Timing {
             binary: "ch04-refraction",

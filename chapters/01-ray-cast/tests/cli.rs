@@ -153,11 +153,27 @@ fn bad_input_gets_one_clear_line_and_exit_code_2() {
         ),
         (&["--max-depth", "0"], "--max-depth"),
         (&["--max-depth", "65"], "1..=64"),
+        (&["--spp", "0"], "a whole number from 1 to 4096"),
+        (&["--spp", "5000"], "a whole number from 1 to 4096"),
+        (&["--spp", "2.5"], "--spp"),
         (
-            &["--spp", "3"],
-            "1 (the pixel centre) or 5 (the lab's five rays)",
+            &["--pattern", "grid", "--spp", "10"],
+            "--pattern grid needs a square number of rays per pixel (m × m), and 10 is not one: \
+             try --spp 9 or --spp 16",
         ),
-        (&["--spp", "0"], "--spp"),
+        (
+            &["--pattern", "jittered", "--spp", "5"],
+            "try --spp 4 or --spp 9",
+        ),
+        (
+            &["--pattern", "nope"],
+            "the pattern must be one of grid, jittered, random, halton",
+        ),
+        (
+            &["--seed", "-1"],
+            "the seed must be a whole number from 0 to",
+        ),
+        (&["--seed", "1e3"], "--seed"),
         (&["--epsilon", "NaN"], "--epsilon"),
         (&["--epsilon", "-1"], "from 0 to 0.1"),
         (
@@ -206,6 +222,8 @@ fn help_names_every_flag_with_the_chapters_defaults() {
         "--height",
         "--max-depth",
         "--spp",
+        "--pattern",
+        "--seed",
         "--epsilon",
         "--out",
         "--quiet",
@@ -213,6 +231,10 @@ fn help_names_every_flag_with_the_chapters_defaults() {
         assert!(help.contains(flag), "{flag} missing from --help");
     }
     assert!(help.contains("[default: out/ch01-ray-cast]"), "{help}");
+    assert!(
+        help.contains("jittered where N is a square, else halton"),
+        "--help names the default pattern: {help}"
+    );
 }
 
 /// `--watch`: a save renders again; a bad save keeps watching; Ctrl-C ends it.

@@ -5,7 +5,7 @@
 //! The lab's fix traces five rays per pixel — the centre and the middle of
 //! each quarter — and averages them in linear light. The tracing itself is
 //! chapter 4's, unchanged: what this step adds is where the rays go, the
-//! pattern `raylab::SamplePattern::LAB_FIVE`, and the average over it in
+//! pattern `raylab::sampling::LAB_FIVE`, and the average over it in
 //! `raylab::render`. Both live in the core so that every chapter takes
 //! `--spp 5`.
 

@@ -11,7 +11,7 @@ use crate::soa::{LANES, Rays, Vec3x8};
 /// `i`'s `k`-th ray. The arithmetic is `Camera::ray`'s, operation for
 /// operation, so the directions are the same to the bit.
 pub fn primary_rays(camera: &Camera, j: u32, settings: &Settings, rays: &mut Rays) {
-    let offsets = settings.pattern.offsets();
+    let spp = settings.sampling.spp() as usize;
     let (w, h) = (settings.width as f32, settings.height as f32);
     let aspect = w / h;
     let half_height = f32x8::splat(camera.half_height());
@@ -21,7 +21,7 @@ pub fn primary_rays(camera: &Camera, j: u32, settings: &Settings, rays: &mut Ray
         Vec3x8::splat(camera.up()),
     );
     let eye = Vec3x8::splat(camera.eye);
-    let samples = settings.width as usize * offsets.len();
+    let samples = settings.width as usize * spp;
     for first in (0..samples).step_by(LANES) {
         let count = (samples - first).min(LANES);
         // Where in the image each lane's sample lies, in pixels.
@@ -30,7 +30,10 @@ pub fn primary_rays(camera: &Camera, j: u32, settings: &Settings, rays: &mut Ray
         let mut ids = [0u32; LANES];
         for lane in 0..count {
             let sample = first + lane;
-            let (i, (sx, sy)) = (sample / offsets.len(), offsets[sample % offsets.len()]);
+            let i = sample / spp;
+            let (sx, sy) = settings
+                .sampling
+                .offset((i as u32, j), (sample % spp) as u32);
             column[lane] = i as f32 + sx;
             row[lane] = j as f32 + sy;
             ids[lane] = sample as u32;
@@ -49,7 +52,7 @@ pub fn primary_rays(camera: &Camera, j: u32, settings: &Settings, rays: &mut Ray
 #[cfg(test)]
 mod tests {
     use super::*;
-    use raylab::SamplePattern;
+    use raylab::Sampling;
 
     #[test]
     fn eight_camera_rays_at_a_time_are_camera_ray_to_the_bit() {
@@ -59,7 +62,7 @@ mod tests {
             height: 7,
             max_depth: 1,
             epsilon: 1e-4,
-            pattern: SamplePattern::LAB_FIVE,
+            sampling: Sampling::LAB_FIVE,
         };
         for j in 0..7 {
             let mut rays = Rays::default();
@@ -67,7 +70,8 @@ mod tests {
             assert_eq!(rays.len(), 13 * 5);
             rays.pad();
             for s in 0..rays.len() {
-                let (i, offset) = (s / 5, SamplePattern::LAB_FIVE.offsets()[s % 5]);
+                let i = s / 5;
+                let offset = settings.sampling.offset((i as u32, j), (s % 5) as u32);
                 let expected = camera.ray(i as u32, j, offset, 13, 7);
                 let (group, lane) = (s / LANES, s % LANES);
                 assert_eq!(rays.directions(group).lane(lane), expected.direction);

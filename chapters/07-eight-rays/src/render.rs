@@ -157,10 +157,10 @@ fn render_row(
     deepest_row: &mut [u8],
     rays_row: &mut [u32],
 ) -> Tally {
-    let offsets = settings.pattern.offsets();
+    let spp = settings.sampling.spp() as usize;
     let (w, h) = (settings.width, settings.height);
     let waves = &mut worker.waves;
-    waves.start(w as usize * offsets.len(), settings.max_depth);
+    waves.start(w as usize * spp, settings.max_depth);
     primary_rays(camera, j, settings, &mut waves.rays[0]);
     waves.trace(setup);
 
@@ -172,14 +172,15 @@ fn render_row(
     for (i, ((colour, deepest), rays)) in pixels.enumerate() {
         let mut sum = Vec3::ZERO;
         let mut pixel = Sum::default();
-        for (k, &offset) in offsets.iter().enumerate() {
-            let sample = i * offsets.len() + k;
+        for k in 0..spp {
+            let sample = i * spp + k;
             let mut traced = Sum::default();
             if waves.over_budget(sample) {
                 let mut waved = RayCounts::default();
                 count_tree(&waves.nodes, 0, sample, &mut waved);
                 tally.counts = tally.counts - waved;
                 let before = worker.scalar.counts();
+                let offset = settings.sampling.offset((i as u32, j), k as u32);
                 let ray = camera.ray(i as u32, j, offset, w, h);
                 let scalar = worker.scalar.trace(ray);
                 tally.counts = tally.counts + (worker.scalar.counts() - before);
@@ -193,7 +194,7 @@ fn render_row(
             pixel.deepest = pixel.deepest.max(traced.deepest);
             pixel.rays += traced.rays;
         }
-        let average = sum / offsets.len() as f32;
+        let average = sum / spp as f32;
         *colour = if average.is_finite() {
             average
         } else {

@@ -1,0 +1,270 @@
+//! Chapter 6's render loop: many paths per pixel on every core, and what
+//! they add up to — the image, its variance, and its terms.
+
+use std::fmt;
+use std::time::{Duration, Instant};
+
+use rayon::prelude::*;
+
+use raylab::indicatif::ProgressBar;
+use raylab::linear_image::LinearImage;
+use raylab::render::thousands;
+use raylab::{Camera, Scene, Vec3};
+
+use crate::caustics::{CausticMap, KERNEL_RADIUS};
+use crate::integrator::{Materials, PathTracer, Terms};
+use crate::random::Random;
+use crate::sun::Sunlight;
+use raylab::sampling::{Sampling, Stream, sample_rng};
+
+/// What to render.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PathSettings {
+    pub width: u32,
+    pub height: u32,
+    pub sampling: Sampling,
+    /// The most surface hits on a path, the first one included.
+    pub max_depth: u32,
+    pub epsilon: f32,
+    pub materials: Materials,
+    /// `--sun-size` in degrees; `None` for a point sun.
+    pub sun_size: Option<f32>,
+    pub caustics: bool,
+    /// With `--caustics`: photons sent towards each mirror or glass sphere.
+    pub photons_per_sphere: u32,
+}
+
+/// A rendered image and everything measured along the way.
+#[derive(Clone, Debug)]
+pub struct PathRender {
+    pub settings: PathSettings,
+    /// Each pixel's mean radiance (linear).
+    pub image: LinearImage,
+    /// Each pixel's variance of that mean, estimated from its samples:
+    /// `s² / N`; all zero with one sample per pixel, where it is unknown.
+    pub variance: LinearImage,
+    /// The image split by term, in the order of [`Terms::NAMES`].
+    pub terms: [LinearImage; 5],
+    pub paths: u64,
+    /// Every segment of every path (from the eye and after each bounce),
+    /// and every shadow ray.
+    pub rays: u64,
+    pub elapsed: Duration,
+    /// Samples whose radiance came out NaN or infinite and were dropped.
+    /// Always 0 for a correct integrator; reported, not hidden.
+    pub non_finite: u64,
+    /// With `--caustics`: photons sent, landed, rays and time.
+    pub caustics: Option<CausticStats>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CausticStats {
+    pub sent: u64,
+    pub landed: usize,
+    pub rays: u64,
+    pub elapsed: Duration,
+}
+
+/// One pixel's sums over its samples.
+#[derive(Clone, Copy, Default)]
+struct PixelSums {
+    mean: Vec3,
+    variance: Vec3,
+    terms: Terms,
+    rays: u64,
+    non_finite: u64,
+}
+
+// ANCHOR: pixel
+/// Trace a pixel's paths and average them. The variance of the mean comes
+/// from the same samples: `(Σx² − N·x̄²) / (N − 1) / N`, summed in f64
+/// because a sun disc seen in the mirror is 37,000 times brighter than the
+/// sky and its squares would swamp an f32 sum.
+fn render_pixel(
+    tracer: &PathTracer,
+    camera: &Camera,
+    settings: &PathSettings,
+    pixel: (u32, u32),
+) -> PixelSums {
+    let sampling = &settings.sampling;
+    let n = sampling.spp();
+    let (mut sum, mut sum_sq) = ([0f64; 3], [0f64; 3]);
+    let mut out = PixelSums::default();
+    let mut rays = 0u32;
+    for sample in 0..n {
+        let offset = sampling.offset(pixel, sample);
+        let ray = camera.ray(pixel.0, pixel.1, offset, settings.width, settings.height);
+        let mut random = Random(sample_rng(sampling.seed(), pixel, sample, Stream::Path));
+        let terms = tracer.trace(ray, &mut random, &mut rays);
+        let radiance = terms.total();
+        if !radiance.is_finite() {
+            out.non_finite += 1;
+            continue;
+        }
+        out.terms += terms;
+        for (c, x) in radiance.to_array().into_iter().enumerate() {
+            let x = f64::from(x);
+            sum[c] += x;
+            sum_sq[c] += x * x;
+        }
+    }
+    let n = f64::from(n);
+    let mean = sum.map(|s| s / n);
+    let variance = std::array::from_fn(|c| {
+        if n < 2.0 {
+            return 0.0;
+        }
+        ((sum_sq[c] - n * mean[c] * mean[c]) / (n - 1.0)).max(0.0) / n
+    });
+    let to_vec = |a: [f64; 3]| Vec3::new(a[0] as f32, a[1] as f32, a[2] as f32);
+    out.mean = to_vec(mean);
+    out.variance = to_vec(variance);
+    let terms = out.terms.as_array().map(|t| t / n as f32);
+    out.terms = Terms {
+        seen: terms[0],
+        sun_direct: terms[1],
+        sky_direct: terms[2],
+        indirect: terms[3],
+        caustics: terms[4],
+    };
+    out.rays = u64::from(rays);
+    out
+}
+// ANCHOR_END: pixel
+
+/// Render on every core, one image row per task, ticking `progress` per row.
+pub fn render(
+    scene: &Scene,
+    camera: &Camera,
+    settings: &PathSettings,
+    progress: &ProgressBar,
+) -> PathRender {
+    let mut tracer = PathTracer {
+        scene,
+        sun: Sunlight::new(&scene.sun, settings.sun_size),
+        materials: settings.materials,
+        max_depth: settings.max_depth,
+        epsilon: settings.epsilon,
+        caustics: None,
+    };
+    let map = settings.caustics.then(|| {
+        let start = Instant::now();
+        let map = CausticMap::trace(
+            &tracer,
+            settings.photons_per_sphere,
+            settings.sampling.seed(),
+        );
+        let stats = CausticStats {
+            sent: map.sent,
+            landed: map.len(),
+            rays: map.rays,
+            elapsed: start.elapsed(),
+        };
+        (map, stats)
+    });
+    tracer.caustics = map.as_ref().map(|(m, _)| m);
+    let eye_start = Instant::now();
+    let (width, height) = (settings.width as usize, settings.height as usize);
+    let mut pixels = vec![PixelSums::default(); width * height];
+    // ANCHOR: rows
+    pixels
+        .par_chunks_mut(width)
+        .enumerate()
+        .for_each(|(j, row)| {
+            for (i, pixel) in row.iter_mut().enumerate() {
+                *pixel = render_pixel(&tracer, camera, settings, (i as u32, j as u32));
+            }
+            progress.inc(1);
+        });
+    // ANCHOR_END: rows
+    let elapsed = eye_start.elapsed();
+    let image = |f: &dyn Fn(&PixelSums) -> Vec3| {
+        LinearImage::from_pixels(
+            settings.width,
+            settings.height,
+            pixels.iter().map(f).collect(),
+        )
+    };
+    let terms = [0, 1, 2, 3, 4].map(|t| image(&|p: &PixelSums| p.terms.as_array()[t]));
+    PathRender {
+        settings: *settings,
+        image: image(&|p| p.mean),
+        variance: image(&|p| p.variance),
+        terms,
+        paths: (width * height) as u64 * u64::from(settings.sampling.spp()),
+        rays: pixels.iter().map(|p| p.rays).sum(),
+        elapsed,
+        non_finite: pixels.iter().map(|p| p.non_finite).sum(),
+        caustics: map.map(|(_, stats)| stats),
+    }
+}
+
+impl PathRender {
+    pub fn paths_per_second(&self) -> f64 {
+        self.paths as f64 / self.elapsed.as_secs_f64().max(1e-9)
+    }
+
+    pub fn mrays_per_second(&self) -> f64 {
+        self.rays as f64 / self.elapsed.as_secs_f64().max(1e-9) / 1e6
+    }
+}
+
+/// "800×600, 256 spp (random, seed 1), max depth 10, lab materials, point sun".
+impl fmt::Display for PathSettings {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{}×{}, {} spp ({}, seed {}), max depth {}, {} materials, ",
+            self.width,
+            self.height,
+            self.sampling.spp(),
+            self.sampling.pattern().map_or("pixel centre", |p| p.name()),
+            self.sampling.seed(),
+            self.max_depth,
+            self.materials.name()
+        )?;
+        match self.sun_size {
+            None => write!(f, "point sun")?,
+            Some(d) => write!(f, "{d}° sun")?,
+        }
+        if self.caustics {
+            write!(f, ", caustics")?;
+        }
+        Ok(())
+    }
+}
+
+/// The summary line: what was rendered, how many paths and rays, how fast.
+impl fmt::Display for PathRender {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{}: {} paths, {} rays in {:.2} s, {:.1} M paths/s, {:.1} Mrays/s",
+            self.settings,
+            thousands(self.paths),
+            thousands(self.rays),
+            self.elapsed.as_secs_f64(),
+            self.paths_per_second() / 1e6,
+            self.mrays_per_second()
+        )?;
+        if let Some(c) = &self.caustics {
+            write!(
+                f,
+                "; caustics: {} photons from the sun, {} on the ground, {} rays in {:.0} ms \
+                 (kernel radius {KERNEL_RADIUS})",
+                thousands(c.sent),
+                thousands(c.landed as u64),
+                thousands(c.rays),
+                c.elapsed.as_secs_f64() * 1e3
+            )?;
+        }
+        if self.non_finite > 0 {
+            write!(
+                f,
+                "; WARNING: {} samples were NaN or infinite and were dropped",
+                thousands(self.non_finite)
+            )?;
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,237 @@
+//! Chapter 6's program on the shared command line: the shared flags, this
+//! chapter's own (`--materials`, `--sun-size`, `--caustics`), and its files.
+
+use std::ffi::OsString;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Args, FromArgMatches};
+use raylab::{Camera, Scene};
+use raylab_cli::output::save_png;
+use raylab_cli::{self as cli, CliError, MAX_PIXELS, Options, Program};
+
+use crate::exr::save_exr;
+use crate::integrator::{Materials, Terms};
+use crate::render::{PathRender, PathSettings, render};
+use crate::sun::MAX_SUN_SIZE;
+use raylab::sampling::{Pattern, Sampling};
+
+/// Chapter 6's name and defaults: 256 paths per pixel, ten hits per path.
+pub const PROGRAM: Program = Program {
+    binary: "ch06-path-tracing",
+    about: "Chapter 6, the rendering equation: the lab scene path traced, with sky light, \
+            bounced light and (with --caustics) the light the glass focuses.",
+    max_depth: 10,
+    spp: 256,
+};
+
+/// The flags only chapter 6 has.
+#[derive(Args, Debug, Clone, PartialEq)]
+pub struct Flags {
+    /// What the lab's shares mean: a fixed mixture (lab) or exact Fresnel on the glass
+    #[arg(long, value_enum, default_value_t = Materials::Lab)]
+    pub materials: Materials,
+
+    /// The sun as a disc DEGREES across, more than 0 and at most 180 (the real sun: 0.53) [default: a point]
+    #[arg(long, value_name = "DEGREES", value_parser = parse_sun_size, allow_negative_numbers = true)]
+    pub sun_size: Option<f32>,
+
+    /// Add the caustics: light traced from the sun through mirror and glass onto the ground
+    #[arg(long)]
+    pub caustics: bool,
+}
+
+fn parse_sun_size(text: &str) -> Result<f32, String> {
+    match text.parse::<f32>() {
+        Ok(d) if d.is_finite() && d > 0.0 && d <= MAX_SUN_SIZE => Ok(d),
+        _ => Err(format!(
+            "the sun's size is its angular diameter in degrees, more than 0 and at most \
+             {MAX_SUN_SIZE} (the real sun is 0.53)"
+        )),
+    }
+}
+
+/// The shared flags with chapter 6's defaults, and its own.
+pub fn command() -> clap::Command {
+    Flags::augment_args(Options::command(&PROGRAM))
+        .mut_arg("spp", |a| a.help("Paths per pixel, 1 to 4096"))
+        .mut_arg("pattern", |a| {
+            a.help("Where a pixel's paths start: jittered (N = m²), random or halton [default: random]")
+        })
+}
+
+/// Parse chapter 6's command line (`args` starts with the program's name).
+pub fn parse(
+    args: impl IntoIterator<Item = impl Into<OsString> + Clone>,
+) -> Result<(Options, Flags), clap::Error> {
+    let matches = command().try_get_matches_from(args)?;
+    Ok((
+        Options::from_arg_matches(&matches)?,
+        Flags::from_arg_matches(&matches)?,
+    ))
+}
+
+/// The render settings the flags ask for, once checked together.
+pub fn settings(options: &Options, flags: &Flags) -> Result<PathSettings, CliError> {
+    let refuse = |flag: &str, what: &str| {
+        Err(CliError::Usage(format!(
+            "chapter 6 has no {flag}: {what} (see --help)"
+        )))
+    };
+    if options.probe.is_some() {
+        return refuse("--probe", "a path is random, not a ray tree");
+    }
+    if options.sweep.is_some() {
+        return refuse("--sweep", "run it with --max-depth 1, 2, 3, … instead");
+    }
+    if options.watch {
+        return refuse(
+            "--watch",
+            "a path-traced render takes seconds, not milliseconds",
+        );
+    }
+    let pixels = u64::from(options.width) * u64::from(options.height);
+    if pixels > MAX_PIXELS {
+        return Err(CliError::TooManyPixels {
+            width: options.width,
+            height: options.height,
+            pixels,
+        });
+    }
+    // A path tracer's pixel is the average over its whole area (LAB.md),
+    // so its samples are spread at random, even for one path per pixel;
+    // by default independently, so that the variance estimated from them
+    // is exactly the variance of the mean.
+    let pattern = options.pattern.unwrap_or(Pattern::Random);
+    if pattern == Pattern::Grid {
+        return Err(CliError::Usage(
+            "chapter 6 cannot use --pattern grid: a path tracer's samples must be spread at \
+             random over the pixel (use jittered, random or halton)"
+                .into(),
+        ));
+    }
+    let sampling = Sampling::new(options.spp, Some(pattern), options.seed)?;
+    Ok(PathSettings {
+        width: options.width,
+        height: options.height,
+        sampling,
+        max_depth: options.max_depth,
+        epsilon: options.epsilon,
+        materials: flags.materials,
+        sun_size: flags.sun_size,
+        caustics: flags.caustics,
+        photons_per_sphere: crate::caustics::PHOTONS_PER_SPHERE,
+    })
+}
+
+/// What a run made.
+#[derive(Debug)]
+pub struct Report {
+    pub render: PathRender,
+    pub out_dir: PathBuf,
+    /// Every file written, `render.png` first.
+    pub written: Vec<PathBuf>,
+}
+
+/// The file name of each term's image, without its extension.
+pub const TERM_FILES: [&str; 5] = [
+    "term-seen",
+    "term-sun-direct",
+    "term-sky-direct",
+    "term-indirect",
+    "term-caustics",
+];
+
+/// Render and write `render.png`, `render.exr`, `variance.exr` (with two or
+/// more paths per pixel) and, unless `--no-diagrams`, each term as EXR and PNG.
+pub fn run(options: &Options, flags: &Flags) -> Result<Report, CliError> {
+    let settings = settings(options, flags)?;
+    let (scene, camera) = match &options.scene {
+        Some(path) => raylab_cli::scene_file::load(path)?,
+        None => (Scene::lab(), Camera::lab()),
+    };
+    let out_dir = options
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from("out").join(PROGRAM.binary));
+    cli::prepare_out_dir(&out_dir)?;
+
+    let progress = cli::progress_bar(u64::from(settings.height), options.quiet);
+    let rendered = render(&scene, &camera, &settings, &progress);
+    progress.finish_and_clear();
+
+    let mut written = Vec::new();
+    let png = |name: &str, image: &raylab::linear_image::LinearImage| {
+        let path = out_dir.join(name);
+        save_png(&image.to_srgb8(), &path).map(|()| path)
+    };
+    written.push(png("render.png", &rendered.image)?);
+    let exr = |name: &str, image: &raylab::linear_image::LinearImage| {
+        let path = out_dir.join(name);
+        save_exr(image, &path).map(|()| path)
+    };
+    written.push(exr("render.exr", &rendered.image)?);
+    if settings.sampling.spp() > 1 {
+        written.push(exr("variance.exr", &rendered.variance)?);
+    }
+    if !options.no_diagrams {
+        for (name, image) in TERM_FILES.iter().zip(&rendered.terms) {
+            written.push(exr(&format!("{name}.exr"), image)?);
+        }
+        for (name, image) in TERM_FILES.iter().zip(&rendered.terms) {
+            written.push(png(&format!("{name}.png"), image)?);
+        }
+    }
+    Ok(Report {
+        render: rendered,
+        out_dir,
+        written,
+    })
+}
+
+/// What a run prints: the summary line and where the files are.
+pub fn report_text(report: &Report) -> String {
+    let names: Vec<String> = report
+        .written
+        .iter()
+        .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
+        .collect();
+    let mut text = format!("{}: {}\n", PROGRAM.binary, report.render);
+    if report.render.settings.sampling.spp() == 1 {
+        text.push_str("  (one path per pixel: no variance.exr, it needs two or more)\n");
+    }
+    text.push_str(&format!(
+        "  wrote {} in {}\n",
+        names.join(", "),
+        report.out_dir.display()
+    ));
+    text
+}
+
+/// Chapter 6's whole `main`: parse, render, write, report; bad input gives
+/// one line on stderr and exit code 2.
+pub fn main() -> ExitCode {
+    let result = parse(std::env::args_os())
+        .map_err(|e| match e.kind() {
+            clap::error::ErrorKind::DisplayHelp | clap::error::ErrorKind::DisplayVersion => {
+                let _ = e.print();
+                None
+            }
+            _ => Some(CliError::Usage(cli::usage_line(&e))),
+        })
+        .and_then(|(options, flags)| {
+            let report = run(&options, &flags).map_err(Some)?;
+            if !options.quiet {
+                use std::io::Write;
+                let text = report_text(&report);
+                let _ = std::io::stdout().lock().write_all(text.as_bytes());
+            }
+            Ok(())
+        });
+    cli::exit(PROGRAM.binary, result)
+}
+
+#[allow(dead_code)]
+fn _terms_match_files() {
+    let _: [(); Terms::NAMES.len()] = [(); TERM_FILES.len()];
+}
