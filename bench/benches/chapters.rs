@@ -18,22 +18,9 @@ use raylab_cli::{Chapter, Options};
 /// Each chapter's program renders with its step's `render_image`: the
 /// scalar `raylab::render` for chapters 1-5, waves of eight for chapter 7.
 fn bench_chapter<S: Step>(c: &mut Criterion, chapter: &Chapter<S>) {
-    let settings = Options::defaults(chapter)
-        .settings()
-        .expect("the defaults are valid");
-    let (scene, camera) = (Scene::lab(), Camera::lab());
-    let hidden = ProgressBar::hidden();
-    // One render first, to know how many rays a render traces.
-    let render = || {
-        chapter
-            .step
-            .render_image(&scene, &camera, &settings, &hidden)
-    };
-    let rays = render().counts.total();
     let mut group = c.benchmark_group("render 800x600");
-    group.throughput(Throughput::Elements(rays));
     group.sample_size(20);
-    group.bench_function(chapter.binary, |b| b.iter(render));
+    bench_in(&mut group, chapter);
     group.finish();
 }
 
@@ -93,6 +80,8 @@ fn interleaved(c: &mut Criterion) {
     }
 }
 
+/// Add `chapter`'s default render to `group`, with its throughput in rays
+/// (one render first, to know how many rays a render traces).
 fn bench_in<S: Step>(
     group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
     chapter: &Chapter<S>,
