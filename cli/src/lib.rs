@@ -230,6 +230,20 @@ impl<S: Step> Chapter<S> {
     }
 }
 
+/// Refuse an image of more than [`MAX_PIXELS`] pixels in all (each side is
+/// already checked by its own flag).
+pub fn check_pixel_count(width: u32, height: u32) -> Result<(), CliError> {
+    let pixels = u64::from(width) * u64::from(height);
+    if pixels > MAX_PIXELS {
+        return Err(CliError::TooManyPixels {
+            width,
+            height,
+            pixels,
+        });
+    }
+    Ok(())
+}
+
 impl Options {
     /// The shared flags, with a program's name and defaults.
     pub fn command(program: &Program) -> clap::Command {
@@ -276,14 +290,7 @@ impl Options {
 
     /// The render settings these options ask for, once checked together.
     pub fn settings(&self) -> Result<Settings, CliError> {
-        let pixels = u64::from(self.width) * u64::from(self.height);
-        if pixels > MAX_PIXELS {
-            return Err(CliError::TooManyPixels {
-                width: self.width,
-                height: self.height,
-                pixels,
-            });
-        }
+        check_pixel_count(self.width, self.height)?;
         if let Some((x, y)) = self.probe
             && (x >= self.width || y >= self.height)
         {

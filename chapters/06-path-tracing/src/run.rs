@@ -8,7 +8,7 @@ use std::process::ExitCode;
 use clap::{Args, FromArgMatches};
 use raylab::{Camera, Scene};
 use raylab_cli::output::save_png;
-use raylab_cli::{self as cli, CliError, MAX_PIXELS, Options, Program};
+use raylab_cli::{self as cli, CliError, Options, Program};
 
 use crate::exr::save_exr;
 use crate::integrator::{Materials, Terms};
@@ -90,14 +90,7 @@ pub fn settings(options: &Options, flags: &Flags) -> Result<PathSettings, CliErr
             "a path-traced render takes seconds, not milliseconds",
         );
     }
-    let pixels = u64::from(options.width) * u64::from(options.height);
-    if pixels > MAX_PIXELS {
-        return Err(CliError::TooManyPixels {
-            width: options.width,
-            height: options.height,
-            pixels,
-        });
-    }
+    cli::check_pixel_count(options.width, options.height)?;
     // A path tracer's pixel is the average over its whole area (LAB.md),
     // so its samples are spread at random, even for one path per pixel;
     // by default independently, so that the variance estimated from them
