@@ -26,6 +26,7 @@ pub mod scene;
 pub mod sphere;
 pub mod srgb;
 pub mod stack;
+pub mod tolerance;
 pub mod trace;
 
 /// The vector of every point, direction and colour: glam's `Vec3A`, a

@@ -13,7 +13,7 @@ mod rng;
 use std::fmt;
 
 pub use halton::{ONE_BELOW, halton_2_3, radical_inverse};
-pub use rng::{Stream, sample_rng, splitmix64, unit_f32};
+pub use rng::{PixelHash, Stream, sample_rng, splitmix64, unit_f32};
 
 /// The most samples per pixel accepted (a 64 × 64 grid).
 pub const MAX_SPP: u32 = 4096;
@@ -126,13 +126,16 @@ pub enum SamplingError {
 /// A render's samples: how many per pixel, where, and the seed of every
 /// random choice. `--spp 1` is the pixel centre and `--spp 5` the lab's
 /// five, exactly as the lab has them, unless a pattern is asked for.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sampling {
     spp: u32,
     layout: Layout,
     seed: u64,
     /// m, the side of the m × m grid of cells (1 for the other layouts).
     side: u32,
+    /// The points of [`Layout::LabFive`]: [`LAB_FIVE`], or the five the
+    /// chapter's step gives ([`Sampling::with_lab_five`]).
+    five: [(f32, f32); 5],
 }
 
 impl Sampling {
@@ -142,6 +145,7 @@ impl Sampling {
         layout: Layout::PixelCentre,
         seed: 0,
         side: 1,
+        five: LAB_FIVE,
     };
 
     /// The lab's five rays, as LAB.md's chapter 5.
@@ -150,6 +154,7 @@ impl Sampling {
         layout: Layout::LabFive,
         seed: 0,
         side: 1,
+        five: LAB_FIVE,
     };
 
     /// `spp` samples per pixel in `pattern` (or, without one, the lab's
@@ -176,7 +181,15 @@ impl Sampling {
             layout,
             seed,
             side,
+            five: LAB_FIVE,
         })
+    }
+
+    /// The same sampling with `five` as the lab's five points: how a
+    /// chapter's own [`Step::lab_five`](crate::Step::lab_five) reaches every
+    /// render, probe and sweep of `--spp 5`. The other layouts ignore it.
+    pub fn with_lab_five(self, five: [(f32, f32); 5]) -> Sampling {
+        Sampling { five, ..self }
     }
 
     /// Samples per pixel.
@@ -205,21 +218,73 @@ impl Sampling {
         self.pattern().is_some_and(Pattern::is_random)
     }
 
-    // ANCHOR: offset
+    /// What pixel `pixel`'s samples share, worked out once for all of them.
+    #[inline]
+    pub fn pixel(&self, pixel: (u32, u32)) -> PixelSamples {
+        // Fixed points need no hash: the pixel centre, the lab's five and
+        // the grid cost nothing per pixel.
+        let hash = self.is_random().then(|| PixelHash::new(self.seed, pixel));
+        let shift = match (self.layout, hash) {
+            // One shift for the whole pixel, drawn as its sample 0.
+            (Layout::Pattern(Pattern::Halton), Some(hash)) => {
+                let mut shift = hash.sample_rng(0, Stream::Rotation);
+                (unit_f32(&mut shift), unit_f32(&mut shift))
+            }
+            _ => (0.0, 0.0),
+        };
+        PixelSamples {
+            sampling: *self,
+            hash,
+            shift,
+        }
+    }
+
     /// The offset (sx, sy) in [0,1)² of sample `sample` (from 0, below
     /// [`Sampling::spp`]) of pixel `pixel` (column, row). Pure: it depends
     /// on (seed, pixel, sample) only, never on what was drawn before.
     pub fn offset(&self, pixel: (u32, u32), sample: u32) -> (f32, f32) {
-        debug_assert!(sample < self.spp, "sample {sample} of {}", self.spp);
-        let pattern = match self.layout {
+        self.pixel(pixel).offset(sample)
+    }
+
+    /// Every sample's offset in pixel `pixel`, in the order they are summed.
+    pub fn offsets(&self, pixel: (u32, u32)) -> impl Iterator<Item = (f32, f32)> + use<> {
+        let samples = self.pixel(pixel);
+        (0..self.spp).map(move |k| samples.offset(k))
+    }
+}
+
+/// One pixel's samples ([`Sampling::pixel`]): the pixel's part of every
+/// sample's hash, and halton's shift, computed once rather than per sample.
+#[derive(Clone, Copy, Debug)]
+pub struct PixelSamples {
+    sampling: Sampling,
+    /// `None` for the patterns that draw no random numbers.
+    hash: Option<PixelHash>,
+    /// Halton's per-pixel shift (Cranley–Patterson rotation).
+    shift: (f32, f32),
+}
+
+impl PixelSamples {
+    // ANCHOR: offset
+    /// The offset (sx, sy) in [0,1)² of sample `sample` of this pixel.
+    /// Pure: it depends on (seed, pixel, sample) only, never on what was
+    /// drawn before, so any order of samples gives the same points.
+    #[inline]
+    pub fn offset(&self, sample: u32) -> (f32, f32) {
+        let s = &self.sampling;
+        debug_assert!(sample < s.spp, "sample {sample} of {}", s.spp);
+        let pattern = match s.layout {
             Layout::PixelCentre => return (0.5, 0.5),
-            Layout::LabFive => return LAB_FIVE[sample as usize],
+            Layout::LabFive => return s.five[sample as usize],
             Layout::Pattern(p) => p,
         };
-        let m = self.side as f32;
+        let m = s.side as f32;
         // Cells are numbered row by row, left to right.
-        let cell = ((sample % self.side) as f32, (sample / self.side) as f32);
-        let rng = || sample_rng(self.seed, pixel, sample, Stream::Offset);
+        let cell = ((sample % s.side) as f32, (sample / s.side) as f32);
+        let rng = || {
+            let hash = self.hash.expect("a random pattern hashes its pixel");
+            hash.sample_rng(sample, Stream::Offset)
+        };
         match pattern {
             Pattern::Grid => ((cell.0 + 0.5) / m, (cell.1 + 0.5) / m),
             Pattern::Jittered => {
@@ -235,20 +300,12 @@ impl Sampling {
                 (unit_f32(&mut rng), unit_f32(&mut rng))
             }
             Pattern::Halton => {
-                // One shift for the whole pixel, drawn as its sample 0.
-                let mut shift = sample_rng(self.seed, pixel, 0, Stream::Rotation);
-                let (dx, dy) = (unit_f32(&mut shift), unit_f32(&mut shift));
                 let (hx, hy) = halton_2_3(sample);
-                (wrap(hx + dx), wrap(hy + dy))
+                (wrap(hx + self.shift.0), wrap(hy + self.shift.1))
             }
         }
     }
     // ANCHOR_END: offset
-
-    /// Every sample's offset in pixel `pixel`, in the order they are summed.
-    pub fn offsets(&self, pixel: (u32, u32)) -> impl Iterator<Item = (f32, f32)> + '_ {
-        (0..self.spp).map(move |k| self.offset(pixel, k))
-    }
 }
 
 /// `x` modulo 1, for `x` in [0, 2): the subtraction is exact (Sterbenz).

@@ -22,6 +22,13 @@ use crate::stack::{MAX_DEPTH_LIMIT, MAX_SECONDARIES, PendingRay, RayStack};
 pub trait Step: Sync {
     fn shade(&self, ray: &Ray, hit: &Hit, surface: &mut Surface) -> Vec3;
 
+    /// Where the five rays of `--spp 5` go in a pixel, as offsets in
+    /// [0,1)²: by default [`LAB_FIVE`](crate::sampling::LAB_FIVE). Chapter 5,
+    /// whose step they are, gives its own.
+    fn lab_five(&self) -> [(f32, f32); 5] {
+        crate::sampling::LAB_FIVE
+    }
+
     /// How a program renders its whole image with this step: by default
     /// one ray at a time, with [`render`](crate::render::render). Chapter 7
     /// overrides it to trace eight rays at a time, to the same bytes; the

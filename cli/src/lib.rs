@@ -357,6 +357,10 @@ pub fn progress_bar(rows: u64, quiet: bool) -> ProgressBar {
 /// A pixel asked for with `--probe` is probed even with `--no-diagrams`.
 pub fn run<S: Step>(chapter: &Chapter<S>, options: &Options) -> Result<Report, CliError> {
     let settings = options.settings()?;
+    let settings = Settings {
+        sampling: settings.sampling.with_lab_five(chapter.step.lab_five()),
+        ..settings
+    };
     // Read the scene before anything is written: a bad file writes nothing.
     let (scene, camera) = match &options.scene {
         Some(path) => scene_file::load(path)?,

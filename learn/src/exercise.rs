@@ -34,7 +34,7 @@ pub struct Exercise {
 }
 
 /// Every exercise, in the book's order.
-pub const EXERCISES: [Exercise; 4] = [
+pub const EXERCISES: [Exercise; 5] = [
     Exercise {
         number: 1,
         dir: "chapters/01-ray-cast",
@@ -77,6 +77,13 @@ pub const EXERCISES: [Exercise; 4] = [
                critical angle: then send the share t along `reflect(d, n)` as \
                `RayKind::TotalInternalReflection`. Normalise every new direction and start it \
                `surface.epsilon()` along itself.",
+    },
+    Exercise {
+        number: 5,
+        dir: "chapters/05-antialiasing",
+        package: "ch05-antialiasing",
+        page: "book/src/ch05-antialiasing.md",
+        hint: "Offsets are measured from the pixel's top-left corner, with the pixel 1 wide and                1 high, x to the right and y down. The centre is (0.5, 0.5); each quarter is                0.5 wide, so its middle is 0.25 in from its sides: x and y are each 0.25 or                0.75. The order matters to the last bit of the sum: top left, top right, bottom                left, bottom right. The core averages the five colours in linear light for you.",
     },
 ];
 

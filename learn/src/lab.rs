@@ -4,9 +4,11 @@
 //! Each exercise is a copy of its chapter's crate with the step blanked,
 //! and is its own workspace: its `Cargo.toml` depends on the finished core
 //! and earlier chapters by path, so chapter 3's exercise stands on the
-//! reference chapters 1 and 2. All exercises build into one target folder
-//! (`target/learn/`), so the core is compiled once and each check
-//! recompiles only the learner's few lines.
+//! reference chapters 1 and 2. All exercises build into the workspace's
+//! own target folder (`target/`), so the libraries the workspace has
+//! compiled already (image, rayon, clap …) are used as they are, the core
+//! is compiled for the exercises once, and each check recompiles only the
+//! learner's few lines.
 
 use std::collections::BTreeSet;
 use std::io::Write;
@@ -58,12 +60,12 @@ pub struct Started {
 }
 
 impl Lab {
-    /// The lab of the workspace at `root`: `root/my-lab`, `root/target/learn`.
+    /// The lab of the workspace at `root`: `root/my-lab`, building into `root/target`.
     pub fn in_workspace(root: &Path) -> Lab {
         Lab {
             root: root.to_owned(),
             dir: root.join("my-lab"),
-            target: root.join("target").join("learn"),
+            target: root.join("target"),
         }
     }
 
@@ -154,9 +156,13 @@ impl Lab {
         let mut text = format!(
             "# Your exercise for {exercise}, made by `cargo run -p learn -- start {}`.\n\
              # Its own workspace, built against the finished core and earlier chapters.\n\
-             [package]\nname = \"{}\"\nversion = \"0.1.0\"\nedition = \"2024\"\npublish = false\n\n\
+             [package]\nname = \"{package}\"\nversion = \"0.1.0\"\nedition = \"2024\"\npublish = false\n\n\
+             # Your program is `my-{package}`, so that it never takes the place of the\n\
+             # chapter's own `{package}` in the shared target folder.\n\
+             [[bin]]\nname = \"my-{package}\"\npath = \"src/main.rs\"\n\n\
              [dependencies]\n",
-            exercise.number, exercise.package
+            exercise.number,
+            package = exercise.package
         );
         for (name, spec) in deps {
             let spec = if spec.get("workspace").and_then(|w| w.as_bool()) == Some(true) {

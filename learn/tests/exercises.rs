@@ -4,9 +4,10 @@
 //! of broken step.
 //!
 //! Every lab here builds into the target folder the learner's exercises
-//! use, `target/learn/`, so the core is compiled for the exercises once
-//! (on a fresh clone, by the first of these tests) and each exercise costs
-//! only its own crate. The labs share that folder's program names, so the
+//! use, the workspace's own `target/`: the libraries `cargo test` has just
+//! compiled are used as they are, the core is compiled for the exercises
+//! once (on a fresh clone, by the first of these tests) and each exercise
+//! costs only its own crate. The labs share that folder's program names, so the
 //! checks take turns (`LOCK`), and cargo relinks a learner's program from
 //! its own build the next time they check.
 

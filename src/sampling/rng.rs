@@ -27,6 +27,7 @@ pub enum Stream {
 /// One round of SplitMix64 (Steele, Lea and Flood, 2014): add the golden
 /// ratio constant, then scramble. Any change to one input bit flips about
 /// half of the output bits, which is what seeding needs.
+#[inline]
 pub fn splitmix64(x: u64) -> u64 {
     let mut z = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
     z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
@@ -41,7 +42,7 @@ pub fn splitmix64(x: u64) -> u64 {
 ///
 /// ```text
 /// h = splitmix64(seed)
-/// h = splitmix64(h ^ (column << 32 | row))
+/// h = splitmix64(h ^ (column << 32 | row))    (PixelHash: once per pixel)
 /// h = splitmix64(h ^ sample)
 /// h = splitmix64(h ^ stream)
 /// generator = Pcg32::new(state = h, stream = stream)
@@ -50,18 +51,37 @@ pub fn splitmix64(x: u64) -> u64 {
 /// Neighbouring pixels and samples (inputs one bit apart) thus start from
 /// unrelated states; the stream number also picks the PCG increment, so
 /// two kinds of choice for the same sample are different sequences.
-pub fn sample_rng(seed: u64, (column, row): (u32, u32), sample: u32, stream: Stream) -> Pcg32 {
-    let pixel = (u64::from(column) << 32) | u64::from(row);
-    let mut h = splitmix64(seed);
-    h = splitmix64(h ^ pixel);
-    h = splitmix64(h ^ u64::from(sample));
-    h = splitmix64(h ^ stream as u64);
-    Pcg32::new(h, stream as u64)
+pub fn sample_rng(seed: u64, pixel: (u32, u32), sample: u32, stream: Stream) -> Pcg32 {
+    PixelHash::new(seed, pixel).sample_rng(sample, stream)
+}
+
+/// The first two rounds of [`sample_rng`]'s hash, which depend on the
+/// seed and the pixel only: a pixel's N samples share them, so a renderer
+/// hashes them once per pixel rather than N times. The generators are the
+/// same either way.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PixelHash(u64);
+
+impl PixelHash {
+    #[inline]
+    pub fn new(seed: u64, (column, row): (u32, u32)) -> PixelHash {
+        let pixel = (u64::from(column) << 32) | u64::from(row);
+        PixelHash(splitmix64(splitmix64(seed) ^ pixel))
+    }
+
+    /// The generator for sample `sample`'s choices of kind `stream`.
+    #[inline]
+    pub fn sample_rng(self, sample: u32, stream: Stream) -> Pcg32 {
+        let h = splitmix64(self.0 ^ u64::from(sample));
+        let h = splitmix64(h ^ stream as u64);
+        Pcg32::new(h, stream as u64)
+    }
 }
 // ANCHOR_END: hash
 
 /// A uniform number in [0, 1) from the top 24 bits of one draw: every
 /// value is an exact `f32`, the largest is `1 - 2⁻²⁴`, and 1 never comes.
+#[inline]
 pub fn unit_f32(rng: &mut Pcg32) -> f32 {
     (rng.next_u32() >> 8) as f32 * (1.0 / (1u32 << 24) as f32)
 }
@@ -78,6 +98,21 @@ mod tests {
         assert_eq!(splitmix64(0), 0xe220_a839_7b1d_cdaf);
         assert_eq!(splitmix64(GAMMA), 0x6e78_9e6a_a1b9_65f4);
         assert_eq!(splitmix64(GAMMA.wrapping_mul(2)), 0x06c4_5d18_8009_454f);
+    }
+
+    #[test]
+    fn a_pixel_hash_made_once_gives_the_generators_of_the_four_round_chain() {
+        // The documented chain, written out round by round.
+        let (seed, (column, row), sample) = (7u64, (3u32, 4u32), 5u32);
+        let mut h = splitmix64(seed);
+        h = splitmix64(h ^ ((u64::from(column) << 32) | u64::from(row)));
+        h = splitmix64(h ^ u64::from(sample));
+        h = splitmix64(h ^ Stream::Offset as u64);
+        let mut chain = Pcg32::new(h, Stream::Offset as u64);
+        let mut hashed = PixelHash::new(seed, (column, row)).sample_rng(sample, Stream::Offset);
+        for _ in 0..4 {
+            assert_eq!(chain.next_u32(), hashed.next_u32());
+        }
     }
 
     #[test]
