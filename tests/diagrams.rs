@@ -207,6 +207,50 @@ fn chapter_5_probes_one_tree_per_sample() {
 }
 
 #[test]
+fn at_64_rays_per_pixel_the_probe_lists_16_trees_and_counts_the_rest() {
+    let dir = tempfile::tempdir().unwrap();
+    let report = run_small(&ch05_antialiasing::CHAPTER, dir.path(), &["--spp=64"]);
+    let (_, text) = report.probe.unwrap();
+    assert_eq!(
+        text.lines().filter(|l| l.starts_with("sample ")).count(),
+        16,
+        "{text}"
+    );
+    assert!(text.contains("the average of 64 samples"), "{text}");
+    assert!(
+        text.contains("… and 48 more samples (") && text.contains("--probe-full lists every one"),
+        "{text}"
+    );
+    let full = run_small(
+        &ch05_antialiasing::CHAPTER,
+        dir.path(),
+        &["--spp=64", "--probe-full", "--probe=40,30"],
+    );
+    let (_, text) = full.probe.unwrap();
+    assert_eq!(
+        text.lines().filter(|l| l.starts_with("sample ")).count(),
+        64
+    );
+}
+
+#[test]
+fn above_16_rays_per_pixel_a_chapter_sweeps_the_depth_only_when_asked() {
+    let dir = tempfile::tempdir().unwrap();
+    let report = run_small(&ch04_refraction::CHAPTER, dir.path(), &["--spp=25"]);
+    assert!(report.sweep.is_none() && report.sweep_skipped);
+    assert!(!report.out_dir.join("depth-sweep").exists());
+    let asked = run_small(
+        &ch04_refraction::CHAPTER,
+        dir.path(),
+        &["--spp=25", "--sweep=3"],
+    );
+    assert_eq!(asked.sweep.as_ref().map(|s| s.0.images.len()), Some(3));
+    assert!(!asked.sweep_skipped);
+    let sixteen = run_small(&ch04_refraction::CHAPTER, dir.path(), &["--spp=16"]);
+    assert!(sixteen.sweep.is_some());
+}
+
+#[test]
 fn a_probe_outside_the_image_is_refused() {
     let chapter = &ch04_refraction::CHAPTER;
     let options = Options::parse_for(

@@ -112,7 +112,7 @@ pub struct Options {
     #[arg(long)]
     pub probe_full: bool,
 
-    /// Sweep the max depth from 1 to N into depth-sweep/ [default: --max-depth, in chapters 3-5]
+    /// Sweep the max depth from 1 to N into depth-sweep/ [default: --max-depth, in chapters 3-5, up to 16 rays per pixel]
     #[arg(long, value_name = "N", allow_negative_numbers = true,
           value_parser = clap::value_parser!(u32).range(1..=MAX_DEPTH_LIMIT as i64))]
     pub sweep: Option<u32>,
@@ -324,7 +324,15 @@ pub struct Report {
     pub probe: Option<((u32, u32), String)>,
     /// The depth sweep's numbers and its time, when one was made.
     pub sweep: Option<(DepthSweep, std::time::Duration)>,
+    /// Whether the chapter's own depth sweep was left out because the
+    /// render has more than [`SWEEP_SPP`] rays per pixel.
+    pub sweep_skipped: bool,
 }
+
+/// The most rays per pixel at which a chapter sweeps the depth by itself:
+/// the sweep traces every sample again, so at `--spp 4096` it would double
+/// a long render. `--sweep N` makes one at any count.
+pub const SWEEP_SPP: u32 = 16;
 
 /// Make sure `dir` exists and takes new files, before any work is done.
 pub fn prepare_out_dir(dir: &Path) -> Result<(), CliError> {
@@ -384,6 +392,7 @@ pub fn run<S: Step>(chapter: &Chapter<S>, options: &Options) -> Result<Report, C
         written: vec![render_png],
         probe: None,
         sweep: None,
+        sweep_skipped: false,
     };
     if options.no_diagrams {
         if let Some(pixel) = options.probe {
@@ -407,11 +416,20 @@ fn write_probe<S: Step>(
 ) -> Result<(), CliError> {
     let settings = report.rendered.settings;
     let trees = probe::probe(scene, camera, &chapter.step, &settings, pixel);
-    let title = match trees.len() {
-        1 => format!("{}: the ray tree of one pixel", chapter.binary),
-        n => format!("{}: the {n} ray trees of one pixel", chapter.binary),
+    // Past a few trees the figure is a tangle: it draws the first ones.
+    let drawn = trees.len().min(probe_text::SHOWN_TREES);
+    let title = match (trees.len(), drawn) {
+        (1, _) => format!("{}: the ray tree of one pixel", chapter.binary),
+        (n, d) if d == n => format!("{}: the {n} ray trees of one pixel", chapter.binary),
+        (n, d) => format!(
+            "{}: the first {d} of the {n} ray trees of one pixel",
+            chapter.binary
+        ),
     };
-    let rays: Vec<_> = trees.iter().flat_map(|t| t.rays.iter().copied()).collect();
+    let rays: Vec<_> = trees[..drawn]
+        .iter()
+        .flat_map(|t| t.rays.iter().copied())
+        .collect();
     let figure = ray_tree::ray_tree_figure(scene, camera, &title, pixel, &rays);
     let path = report.out_dir.join("ray-tree.png");
     save_png(&figure, &path)?;
@@ -465,9 +483,13 @@ fn write_diagrams<S: Step>(
         write_probe(chapter, options, scene, camera, pixel, report)?;
     }
 
+    // The sweep costs about one more render; past SWEEP_SPP rays per pixel
+    // it is made only when `--sweep` asks for it.
+    let sweeps_by_default = chapter.max_depth > 1 && settings.sampling.spp() <= SWEEP_SPP;
+    report.sweep_skipped = options.sweep.is_none() && chapter.max_depth > 1 && !sweeps_by_default;
     let depth = options
         .sweep
-        .or((chapter.max_depth > 1).then_some(settings.max_depth));
+        .or(sweeps_by_default.then_some(settings.max_depth));
     if let Some(depth) = depth {
         let start = std::time::Instant::now();
         let sweep_settings = Settings {
@@ -522,6 +544,14 @@ fn report_text<S: Step>(chapter: &Chapter<S>, options: &Options, report: &Report
             elapsed.as_secs_f64() * 1e3,
             crate::diagrams::sweep::SETTLED,
             sweep.settles_at()
+        ));
+    }
+    if report.sweep_skipped {
+        text.push_str(&format!(
+            "  no depth sweep at {} rays per pixel (it would trace every sample again): \
+             ask for one with --sweep {}\n",
+            report.rendered.settings.sampling.spp(),
+            report.rendered.settings.max_depth
         ));
     }
     let names: Vec<String> = report

@@ -18,6 +18,11 @@ pub enum Listing {
     Full,
 }
 
+/// The most sample trees the text lists (and the ray-tree figure draws)
+/// unless `--probe-full` asks for all: at `--spp 4096` a pixel has 4096
+/// trees, more than anyone reads, and their colour is in the first line.
+pub const SHOWN_TREES: usize = 16;
+
 /// Light below this, in every channel, cannot move a pixel off black:
 /// half of the darkest step of 8-bit sRGB, (0.5/255)/12.92 in linear light.
 /// A subtree that adds less than this to the pixel is folded.
@@ -46,7 +51,11 @@ pub fn format_tree(
         trees.len(),
         if trees.len() == 1 { "" } else { "s" },
     );
-    for (n, tree) in trees.iter().enumerate() {
+    let shown = match listing {
+        Listing::Folded => trees.len().min(SHOWN_TREES),
+        Listing::Full => trees.len(),
+    };
+    for (n, tree) in trees.iter().enumerate().take(shown) {
         if trees.len() > 1 {
             let _ = writeln!(
                 out,
@@ -62,6 +71,15 @@ pub fn format_tree(
             Listing::Full => 0.0,
         };
         format_rays(&mut out, scene, &tree.rays, fold_below);
+    }
+    if shown < trees.len() {
+        let rest = trees.len() - shown;
+        let rays: usize = trees[shown..].iter().map(|t| t.rays.len()).sum();
+        let _ = writeln!(
+            out,
+            "… and {rest} more sample{} ({rays} rays), counted in the colour above but not listed (--probe-full lists every one)",
+            if rest == 1 { "" } else { "s" },
+        );
     }
     out
 }
