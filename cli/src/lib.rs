@@ -207,9 +207,9 @@ pub enum CliError {
 /// What the shared command line needs to know of a program: its name, its
 /// line of help and its defaults. Every [`Chapter`] has one; a chapter that
 /// does not render through the Whitted [`Step`] (chapter 6, a path tracer)
-/// names its own, adds its own flags to [`Options::command`] and ends with
-/// [`exit`], so that its command line and its errors are the same as every
-/// other chapter's.
+/// names its own, adds its own flags to [`Options::command`] and runs on
+/// [`main_of`], so that its command line and its errors are the same as
+/// every other chapter's.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Program {
     pub binary: &'static str,
@@ -593,7 +593,34 @@ pub fn main_with_args<S: Step>(
     chapter: &Chapter<S>,
     args: impl IntoIterator<Item = impl Into<OsString> + Clone>,
 ) -> ExitCode {
-    let result = Options::parse_for(chapter, args)
+    let command = Options::command(&chapter.program());
+    main_of(chapter.binary, command, args, |matches| {
+        let options = Options::from_arg_matches(matches)
+            .map_err(|e| Some(CliError::Usage(usage_line(&e))))?;
+        if options.watch {
+            crate::watch::watch(chapter, &options).map_err(Some)?;
+            return Err(None);
+        }
+        let report = run(chapter, &options).map_err(Some)?;
+        // Quiet or not: with --quiet the report is only what was asked for.
+        print_report(chapter, &options, &report);
+        Ok(())
+    })
+}
+
+/// The `main` of every program on the shared command line, the Whitted
+/// chapters' and chapter 6's alike: parse `args` with `command` (the
+/// shared flags, and any of the program's own), hand the matches to `run`,
+/// and [`exit`]. `--help` prints and stops; any other parsing error is the
+/// one line of [`usage_line`] and exit code 2, like every error `run` gives.
+pub fn main_of(
+    binary: &str,
+    command: clap::Command,
+    args: impl IntoIterator<Item = impl Into<OsString> + Clone>,
+    run: impl FnOnce(&clap::ArgMatches) -> Result<(), Option<CliError>>,
+) -> ExitCode {
+    let result = command
+        .try_get_matches_from(args)
         .map_err(|e| match e.kind() {
             clap::error::ErrorKind::DisplayHelp | clap::error::ErrorKind::DisplayVersion => {
                 let _ = e.print();
@@ -601,19 +628,8 @@ pub fn main_with_args<S: Step>(
             }
             _ => Some(CliError::Usage(usage_line(&e))),
         })
-        .and_then(|options| {
-            if options.watch {
-                crate::watch::watch(chapter, &options).map_err(Some)?;
-                return Err(None);
-            }
-            let report = run(chapter, &options).map_err(Some)?;
-            Ok((options, report))
-        });
-    let result = result.map(|(options, report)| {
-        // Quiet or not: with --quiet the report is only what was asked for.
-        print_report(chapter, &options, &report);
-    });
-    exit(chapter.binary, result)
+        .and_then(|matches| run(&matches));
+    exit(binary, result)
 }
 
 /// The exit of every chapter program: success, a clean stop (`--help`,

@@ -201,27 +201,21 @@ pub fn report_text(report: &Report) -> String {
     text
 }
 
-/// Chapter 6's whole `main`: parse, render, write, report; bad input gives
-/// one line on stderr and exit code 2.
+/// Chapter 6's whole `main`, on the shared one ([`cli::main_of`]): parse,
+/// render, write, report; bad input gives one line on stderr and exit code 2.
 pub fn main() -> ExitCode {
-    let result = parse(std::env::args_os())
-        .map_err(|e| match e.kind() {
-            clap::error::ErrorKind::DisplayHelp | clap::error::ErrorKind::DisplayVersion => {
-                let _ = e.print();
-                None
-            }
-            _ => Some(CliError::Usage(cli::usage_line(&e))),
-        })
-        .and_then(|(options, flags)| {
-            let report = run(&options, &flags).map_err(Some)?;
-            if !options.quiet {
-                use std::io::Write;
-                let text = report_text(&report);
-                let _ = std::io::stdout().lock().write_all(text.as_bytes());
-            }
-            Ok(())
-        });
-    cli::exit(PROGRAM.binary, result)
+    cli::main_of(PROGRAM.binary, command(), std::env::args_os(), |matches| {
+        let usage = |e: clap::Error| Some(CliError::Usage(cli::usage_line(&e)));
+        let options = Options::from_arg_matches(matches).map_err(usage)?;
+        let flags = Flags::from_arg_matches(matches).map_err(usage)?;
+        let report = run(&options, &flags).map_err(Some)?;
+        if !options.quiet {
+            use std::io::Write;
+            let text = report_text(&report);
+            let _ = std::io::stdout().lock().write_all(text.as_bytes());
+        }
+        Ok(())
+    })
 }
 
 #[allow(dead_code)]
