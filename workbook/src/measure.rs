@@ -304,7 +304,11 @@ mod tests {
             .filter(|h| h.is_some_and(|h| h.object == Object::Sphere(0)))
             .count();
         let lit = masks.lit.iter().filter(|&&m| m).count();
-        assert_eq!(lit + 2 + on_the_ball, 81, "every pixel sees the ground or the ball");
+        assert_eq!(
+            lit + 2 + on_the_ball,
+            81,
+            "every pixel sees the ground or the ball"
+        );
         // Without the ball, every pixel is lit ground.
         let (scene, camera) = scene_with_ball(false);
         let masks = ground_masks(&primary_hits(&scene, &camera, 9, 9), &scene, 1e-4);
@@ -326,7 +330,10 @@ mod tests {
         let radiance = image(&[Vec3::splat(0.2), Vec3::splat(0.6), Vec3::splat(9.0)]);
         let albedo = [Vec3::splat(0.25), Vec3::splat(0.75), Vec3::splat(0.5)];
         let mean = mean_over_albedo(&radiance, &albedo, &[true, true, false]).unwrap();
-        assert!((mean - Vec3::splat(0.8)).abs().max_element() < 1e-6, "{mean}");
+        assert!(
+            (mean - Vec3::splat(0.8)).abs().max_element() < 1e-6,
+            "{mean}"
+        );
         assert_eq!(mean_over_albedo(&radiance, &albedo, &[false; 3]), None);
     }
 

@@ -19,7 +19,7 @@ use raylab::{Camera, Hit, Sampling, Scene, Settings, Vec3};
 use raylab_cli::output::{save_png, save_text};
 use raylab_cli::{CliError, scene_file};
 use raylab_plot::colour::series_colour;
-use raylab_plot::{ColourScale, Colormap, Corner, HeatmapFigure, LinePlot, Series, montage};
+use raylab_plot::{Colormap, ColourScale, Corner, HeatmapFigure, LinePlot, Series, montage};
 
 use crate::measure::{
     GroundMasks, ground_masks, lab_shadow_ratio, luminance, mean_over_albedo, mean_variance,
@@ -177,7 +177,10 @@ pub fn make_figures(
     // 4. The sun's size.
     let mut suns = vec![lab];
     for sun in &SUN_SIZES[1..] {
-        suns.push(path_render(&[half.clone(), sun_flag(*sun)].concat(), quiet)?);
+        suns.push(path_render(
+            &[half.clone(), sun_flag(*sun)].concat(),
+            quiet,
+        )?);
     }
     written.extend(sun_figure(&dir.join("sun-size"), &suns)?);
     // 5. The caustic, seen from where it is not hidden by the ball.
@@ -275,7 +278,10 @@ fn comparison(
     for (name, mask) in [
         ("the whole image", None),
         ("ground in the sun", Some(masks.lit.as_slice())),
-        ("ground in the sun's shadow", Some(masks.shadowed.as_slice())),
+        (
+            "ground in the sun's shadow",
+            Some(masks.shadowed.as_slice()),
+        ),
     ] {
         let count = mask.map_or(lw.len(), |m| m.iter().filter(|&&b| b).count());
         let (a, b) = (mean(&lw, mask), mean(&lp, mask));
@@ -373,7 +379,8 @@ fn terms_figure(
         ratio.y,
         ratio.z
     );
-    let received = |image: &LinearImage, mask: &[bool]| mean_over_albedo(image, &masks.albedo, mask);
+    let received =
+        |image: &LinearImage, mask: &[bool]| mean_over_albedo(image, &masks.albedo, mask);
     let sky_term = &path.terms[2];
     if let Some(sky_lit) = received(sky_term, &masks.lit) {
         let _ = writeln!(
@@ -419,7 +426,9 @@ fn terms_figure(
 // 3. The materials
 
 fn glass_ball(scene: &Scene) -> (Vec3, f32) {
-    let glass = scene.sphere_named("glass").expect("the lab has a glass ball");
+    let glass = scene
+        .sphere_named("glass")
+        .expect("the lab has a glass ball");
     let shape = scene.spheres()[glass].shape;
     (shape.centre, shape.radius)
 }
@@ -626,11 +635,7 @@ fn caustic_figure(
         traced.caustics.map_or(0, |c| c.sent),
         traced.caustics.map_or(0, |c| c.landed)
     );
-    save_all(
-        dir,
-        &[("caustic.png", &figure)],
-        &[("caustic.md", &text)],
-    )
+    save_all(dir, &[("caustic.png", &figure)], &[("caustic.md", &text)])
 }
 
 // ---------------------------------------------------------------------------
@@ -657,10 +662,7 @@ fn convergence_size(size: Size) -> (u32, u32) {
 
 fn convergence_figures(dir: &Path, size: Size, quiet: bool) -> Result<Vec<PathBuf>, JobError> {
     let (w, h) = convergence_size(size);
-    let reference = path_render(
-        &with(size_flags(w, h, REFERENCE_SPP), &["--seed=1"]),
-        quiet,
-    )?;
+    let reference = path_render(&with(size_flags(w, h, REFERENCE_SPP), &["--seed=1"]), quiet)?;
     let reference_variance = mean_variance(&reference.variance);
     let mut points = Vec::new();
     let mut noise: Vec<(u32, RgbImage)> = Vec::new();
@@ -727,7 +729,11 @@ fn convergence_plot(points: &[ConvergencePoint], (w, h): (u32, u32)) -> RgbImage
     .x_range(1.0, 2048.0)
     .log_y(1e-4)
     .legend(Corner::BottomLeft)
-    .series(Series::new("measured", series_colour(0), series(|p| Some(p.rmse))))
+    .series(Series::new(
+        "measured",
+        series_colour(0),
+        series(|p| Some(p.rmse)),
+    ))
     .series(Series::new(
         "predicted by the render's own variance",
         series_colour(1),
@@ -807,7 +813,9 @@ fn depth_figures(dir: &Path, size: Size, quiet: bool) -> Result<Vec<PathBuf>, Jo
     let labels: Vec<String> = DEPTHS.iter().map(|d| format!("max depth {d}")).collect();
     let refs: Vec<(&str, &RgbImage)> = labels.iter().map(String::as_str).zip(&big).collect();
     let sweep = montage(
-        &format!("Chapter 6 at max depth 1, 2, 3, 5 and 10: {w}×{h}, {SPP} paths per pixel, the same seed"),
+        &format!(
+            "Chapter 6 at max depth 1, 2, 3, 5 and 10: {w}×{h}, {SPP} paths per pixel, the same seed"
+        ),
         &refs,
         5,
     );
