@@ -55,15 +55,25 @@ pub fn symmetric_range(values: &[f32], quantile: f32) -> f32 {
 
 /// The smallest of 1, 2, 5 × 10^k at or above `x` (1 for nothing positive).
 fn round_up_125(x: f32) -> f32 {
-    if !(x > 0.0) {
+    // NaN, zero and below: no scale to round.
+    if x.is_nan() || x <= 0.0 {
         return 1.0;
     }
-    let power = 10f32.powf(x.log10().floor());
+    // Dividing by 10^k rather than multiplying by 10^−k keeps 0.05 the
+    // nearest f32 to 0.05.
+    let exponent = x.log10().floor() as i32;
+    let times_power = |m: f32| {
+        if exponent >= 0 {
+            m * 10f32.powi(exponent)
+        } else {
+            m / 10f32.powi(-exponent)
+        }
+    };
     [1.0, 2.0, 5.0, 10.0]
         .into_iter()
-        .map(|m| m * power)
+        .map(times_power)
         .find(|&m| m >= x * (1.0 - 1e-6))
-        .unwrap_or(10.0 * power)
+        .unwrap_or(times_power(10.0))
 }
 
 /// What the primary ray through each pixel's centre meets first, row by
