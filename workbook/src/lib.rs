@@ -7,6 +7,8 @@ pub mod book;
 pub mod extras;
 pub mod learn_figures;
 pub mod math;
+pub mod measure;
+pub mod path_tracing;
 
 use std::path::{Path, PathBuf};
 use std::time::Duration;
@@ -119,15 +121,21 @@ pub fn speed_table(timings: &[Timing]) -> String {
 /// paths per pixel, with caustics, as
 /// `cargo run --release -p ch06-path-tracing -- --width 400 --height 300
 /// --spp 64 --caustics --out book/src/figures/ch06-path-tracing` (about
-/// 8 million paths: a few seconds on two cores).
-fn path_tracing_figures(figures: &Path, size: Size, quiet: bool) -> Result<Vec<PathBuf>, JobError> {
+/// 8 million paths: a few seconds on two cores); then the figures that
+/// compare it ([`path_tracing::make_figures`]).
+fn path_tracing_figures(
+    figures: &Path,
+    scenes: &Path,
+    size: Size,
+    quiet: bool,
+) -> Result<Vec<PathBuf>, JobError> {
     use ch06_path_tracing::run;
     let out = figures.join(run::PROGRAM.binary);
     let args = [
         run::PROGRAM.binary.to_owned(),
         format!("--width={}", size.width / 2),
         format!("--height={}", size.height / 2),
-        "--spp=64".to_owned(),
+        format!("--spp={}", path_tracing::SPP),
         "--caustics".to_owned(),
         format!("--out={}", out.display()),
     ];
@@ -137,7 +145,15 @@ fn path_tracing_figures(figures: &Path, size: Size, quiet: bool) -> Result<Vec<P
     if !quiet {
         print!("{}", run::report_text(&report));
     }
-    Ok(report.written)
+    let mut written = report.written;
+    written.extend(path_tracing::make_figures(
+        &out,
+        scenes,
+        size,
+        &report.render,
+        quiet,
+    )?);
+    Ok(written)
 }
 
 /// Every figure the book shows, written under `figures`; returns the files.
@@ -186,7 +202,7 @@ pub fn make_figures(
         quiet,
         t,
     )?);
-    written.extend(path_tracing_figures(figures, size, quiet)?);
+    written.extend(path_tracing_figures(figures, scenes, size, quiet)?);
     written.extend(chapter_figures(
         &ch07_eight_rays::chapter(ch07_eight_rays::Like::AntiAliasing),
         figures,
