@@ -11,6 +11,7 @@
 //! point is then estimated from the photons near it: a density estimate.
 
 use rayon::prelude::*;
+use wide::{CmpLe, CmpLt, f32x8};
 
 use raylab::optics::{reflect, refract};
 use raylab::scene::Object;
@@ -36,10 +37,22 @@ struct Photon {
     /// Position in the ground's own two axes.
     u: f32,
     v: f32,
-    /// Its power (irradiance × area), per colour channel.
-    power: Vec3,
+    /// Its power (irradiance × area), the same in every colour channel.
+    power: f32,
     /// Mirror and glass bounces it took from the sun.
     bounces: u32,
+}
+
+/// Photons as four columns of equal length, padded with powerless photons
+/// to a multiple of eight.
+#[derive(Clone, Debug, Default)]
+struct PhotonColumns {
+    u: Vec<f32>,
+    v: Vec<f32>,
+    /// The power every channel carries: mirrors and the lab's glass do not
+    /// tint the sunlight, so one number per photon.
+    power: Vec<f32>,
+    bounces: Vec<f32>,
 }
 
 /// The photons on the ground, bucketed in a grid of cells one kernel
@@ -49,9 +62,15 @@ pub struct CausticMap {
     axis_u: Vec3,
     axis_v: Vec3,
     cells: usize,
-    /// Where each cell's photons start in `photons` (one more entry at the end).
+    /// Where each cell's photons start in the columns (one more entry at
+    /// the end). Cells are numbered row by row, so the three cells of a row
+    /// of the 3 × 3 block a lookup reads are one run of photons.
     cell_start: Vec<u32>,
-    photons: Vec<Photon>,
+    /// The photons sorted by cell, as columns (structure of arrays, as in
+    /// chapter 7), so that a lookup reads eight of them at a time.
+    photons: PhotonColumns,
+    /// How many of the columns' photons are real (the rest is padding).
+    kept: usize,
     /// Light rays sent, and rays traced for them.
     pub sent: u64,
     pub rays: u64,
@@ -125,16 +144,21 @@ impl CausticMap {
         }
         let mut next = cell_start.clone();
         let kept = cell_start[cells * cells] as usize;
-        let none = Photon {
-            u: 0.0,
-            v: 0.0,
-            power: Vec3::ZERO,
-            bounces: 0,
+        // Room for the last run of a lookup to be read eight at a time.
+        let padded = kept.next_multiple_of(8) + 8;
+        let mut sorted = PhotonColumns {
+            u: vec![0.0; padded],
+            v: vec![0.0; padded],
+            power: vec![0.0; padded],
+            bounces: vec![0.0; padded],
         };
-        let mut sorted = vec![none; kept];
         for p in &photons {
             if let Some(c) = cell_of(p) {
-                sorted[next[c] as usize] = *p;
+                let i = next[c] as usize;
+                sorted.u[i] = p.u;
+                sorted.v[i] = p.v;
+                sorted.power[i] = p.power;
+                sorted.bounces[i] = p.bounces as f32;
                 next[c] += 1;
             }
         }
@@ -145,6 +169,7 @@ impl CausticMap {
             cells,
             cell_start,
             photons: sorted,
+            kept,
             sent,
             rays,
         }
@@ -152,11 +177,11 @@ impl CausticMap {
 
     /// How many photons landed on the kept part of the ground.
     pub fn len(&self) -> usize {
-        self.photons.len()
+        self.kept
     }
 
     pub fn is_empty(&self) -> bool {
-        self.photons.is_empty()
+        self.kept == 0
     }
 
     // ANCHOR: density
@@ -174,20 +199,35 @@ impl CausticMap {
         let cx = ((u + EXTENT) / h).floor() as i64;
         let cy = ((v + EXTENT) / h).floor() as i64;
         let last = self.cells as i64 - 1;
-        let mut sum = Vec3::ZERO;
+        // A bright caustic holds thousands of photons in a few cells, and
+        // every path that lands near it reads them all: eight at a time,
+        // each lane one photon, with masks for the ones outside the kernel
+        // or with too many bounces (and the padding, which has no power).
+        let (qu, qv) = (f32x8::splat(u), f32x8::splat(v));
+        let (h2, most) = (f32x8::splat(h * h), f32x8::splat(max_bounces as f32));
+        let mut sum = f32x8::ZERO;
+        let (x0, x1) = ((cx - 1).max(0), (cx + 1).min(last));
+        if x0 > x1 {
+            return Vec3::ZERO; // beside the grid: no photon is that far out
+        }
         for y in (cy - 1).max(0)..=(cy + 1).min(last) {
-            for x in (cx - 1).max(0)..=(cx + 1).min(last) {
-                let cell = (y * self.cells as i64 + x) as usize;
-                let range = self.cell_start[cell] as usize..self.cell_start[cell + 1] as usize;
-                for photon in &self.photons[range] {
-                    let d2 = (photon.u - u).powi(2) + (photon.v - v).powi(2);
-                    if d2 < h * h && photon.bounces <= max_bounces {
-                        sum += photon.power * (1.0 - d2 / (h * h));
-                    }
-                }
+            let row = (y * self.cells as i64) as usize;
+            let start = self.cell_start[row + x0 as usize] as usize;
+            let end = self.cell_start[row + x1 as usize + 1] as usize;
+            let photons = &self.photons;
+            for i in (start..end).step_by(8) {
+                let eight = |column: &[f32]| f32x8::from(&column[i..i + 8]);
+                let (du, dv) = (eight(&photons.u) - qu, eight(&photons.v) - qv);
+                let d2 = du * du + dv * dv;
+                // Lanes past `end` are the next cells' photons: out of this run.
+                let lane = f32x8::from(std::array::from_fn::<f32, 8, _>(|k| (i + k) as f32));
+                let in_run = lane.cmp_lt(f32x8::splat(end as f32));
+                let counts = d2.cmp_lt(h2) & eight(&photons.bounces).cmp_le(most) & in_run;
+                let kernel = f32x8::ONE - d2 / h2;
+                sum += counts.blend(eight(&photons.power) * kernel, f32x8::ZERO);
             }
         }
-        sum * (2.0 / (std::f32::consts::PI * h * h))
+        Vec3::splat(sum.reduce_add() * (2.0 / (std::f32::consts::PI * h * h)))
     }
     // ANCHOR_END: density
 }
@@ -238,7 +278,7 @@ fn photon(
                 return Some(Photon {
                     u: (hit.point - scene.ground.plane.point).dot(ground_axes(scene).0),
                     v: (hit.point - scene.ground.plane.point).dot(ground_axes(scene).1),
-                    power: Vec3::splat(power),
+                    power,
                     bounces,
                 });
             }
@@ -260,4 +300,84 @@ fn photon(
 
 fn ground_axes(scene: &Scene) -> (Vec3, Vec3) {
     scene.ground.plane.normal.any_orthonormal_pair()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A ground point at (u, v) in the ground's own axes.
+    fn ground_point(scene: &Scene, u: f32, v: f32) -> Vec3 {
+        let (a, b) = ground_axes(scene);
+        scene.ground.plane.point + u * a + v * b
+    }
+
+    fn photon_at(u: f32, v: f32, power: f32, bounces: u32) -> Photon {
+        Photon {
+            u,
+            v,
+            power,
+            bounces,
+        }
+    }
+
+    #[test]
+    fn one_photon_spreads_its_power_by_the_epanechnikov_kernel() {
+        let scene = Scene::lab();
+        let map = CausticMap::from_photons(&scene, vec![photon_at(0.3, -0.2, 2.0, 1)], 1, 1);
+        let h = KERNEL_RADIUS;
+        let peak = 2.0 * 2.0 / (std::f32::consts::PI * h * h);
+        let at = |du: f32| map.irradiance(ground_point(&scene, 0.3 + du, -0.2), 10).x;
+        // On the photon: the kernel's peak 2/(πh²), times its power 2.
+        assert!((at(0.0) / peak - 1.0).abs() < 1e-5, "{}", at(0.0));
+        // Half a radius away: 1 − (1/2)² = 3/4 of the peak.
+        assert!((at(h / 2.0) / peak - 0.75).abs() < 1e-4, "{}", at(h / 2.0));
+        // Beyond the radius: nothing.
+        assert_eq!(at(1.01 * h), 0.0);
+    }
+
+    #[test]
+    fn photons_with_more_bounces_than_the_path_allows_do_not_count() {
+        let scene = Scene::lab();
+        let map = CausticMap::from_photons(&scene, vec![photon_at(0.0, 0.0, 1.0, 3)], 1, 1);
+        let p = ground_point(&scene, 0.0, 0.0);
+        assert_eq!(map.irradiance(p, 2), Vec3::ZERO);
+        assert!(map.irradiance(p, 3).x > 0.0);
+    }
+
+    #[test]
+    fn the_eight_at_a_time_sum_equals_the_photon_by_photon_sum() {
+        // Many photons over a few cells, some beyond the kernel, some with
+        // too many bounces: the lanes must count exactly the right ones.
+        let scene = Scene::lab();
+        let photons: Vec<Photon> = (0..203)
+            .map(|k| {
+                let t = k as f32 * 0.618_034;
+                let (u, v) = (0.06 * (t.fract() - 0.5), 0.06 * ((t * 1.7).fract() - 0.5));
+                photon_at(u, v, 1.0 + (k % 5) as f32, 1 + k % 4)
+            })
+            .collect();
+        let map = CausticMap::from_photons(&scene, photons.clone(), 203, 203);
+        let h = KERNEL_RADIUS;
+        for (qu, qv) in [(0.0, 0.0), (0.011, -0.007), (-0.02, 0.024)] {
+            let one_by_one: f32 = photons
+                .iter()
+                .filter(|p| p.bounces <= 2)
+                .map(|p| {
+                    let d2 = (p.u - qu).powi(2) + (p.v - qv).powi(2);
+                    if d2 < h * h {
+                        p.power * (1.0 - d2 / (h * h))
+                    } else {
+                        0.0
+                    }
+                })
+                .sum::<f32>()
+                * (2.0 / (std::f32::consts::PI * h * h));
+            let lanes = map.irradiance(ground_point(&scene, qu, qv), 2).x;
+            assert!(
+                (lanes - one_by_one).abs() <= 1e-4 * one_by_one.max(1.0),
+                "{lanes} against {one_by_one}"
+            );
+        }
+    }
 }
