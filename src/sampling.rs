@@ -13,7 +13,7 @@ mod rng;
 use std::fmt;
 
 pub use halton::{ONE_BELOW, halton_2_3, radical_inverse};
-pub use rng::{Stream, sample_rng, splitmix64, unit_f32};
+pub use rng::{PixelSeed, Stream, sample_rng, splitmix64, unit_f32};
 
 /// The most samples per pixel accepted (a 64 × 64 grid).
 pub const MAX_SPP: u32 = 4096;
@@ -205,11 +205,26 @@ impl Sampling {
         self.pattern().is_some_and(Pattern::is_random)
     }
 
+    /// The first half of every random choice's hash in pixel `pixel`
+    /// (column, row): see [`sample_rng`].
+    #[inline]
+    pub fn pixel_seed(&self, pixel: (u32, u32)) -> PixelSeed {
+        PixelSeed::new(self.seed, pixel)
+    }
+
     // ANCHOR: offset
     /// The offset (sx, sy) in [0,1)² of sample `sample` (from 0, below
     /// [`Sampling::spp`]) of pixel `pixel` (column, row). Pure: it depends
     /// on (seed, pixel, sample) only, never on what was drawn before.
+    #[inline]
     pub fn offset(&self, pixel: (u32, u32), sample: u32) -> (f32, f32) {
+        self.offset_in(self.pixel_seed(pixel), sample)
+    }
+
+    /// The same offset, for a pixel whose seed is already made: a loop over
+    /// a pixel's samples hashes the seed and the pixel once, not per sample.
+    #[inline]
+    pub fn offset_in(&self, pixel: PixelSeed, sample: u32) -> (f32, f32) {
         debug_assert!(sample < self.spp, "sample {sample} of {}", self.spp);
         let pattern = match self.layout {
             Layout::PixelCentre => return (0.5, 0.5),
@@ -219,7 +234,7 @@ impl Sampling {
         let m = self.side as f32;
         // Cells are numbered row by row, left to right.
         let cell = ((sample % self.side) as f32, (sample / self.side) as f32);
-        let rng = || sample_rng(self.seed, pixel, sample, Stream::Offset);
+        let rng = || pixel.sample_rng(sample, Stream::Offset);
         match pattern {
             Pattern::Grid => ((cell.0 + 0.5) / m, (cell.1 + 0.5) / m),
             Pattern::Jittered => {
@@ -236,7 +251,7 @@ impl Sampling {
             }
             Pattern::Halton => {
                 // One shift for the whole pixel, drawn as its sample 0.
-                let mut shift = sample_rng(self.seed, pixel, 0, Stream::Rotation);
+                let mut shift = pixel.sample_rng(0, Stream::Rotation);
                 let (dx, dy) = (unit_f32(&mut shift), unit_f32(&mut shift));
                 let (hx, hy) = halton_2_3(sample);
                 (wrap(hx + dx), wrap(hy + dy))
@@ -247,7 +262,8 @@ impl Sampling {
 
     /// Every sample's offset in pixel `pixel`, in the order they are summed.
     pub fn offsets(&self, pixel: (u32, u32)) -> impl Iterator<Item = (f32, f32)> + '_ {
-        (0..self.spp).map(move |k| self.offset(pixel, k))
+        let pixel = self.pixel_seed(pixel);
+        (0..self.spp).map(move |k| self.offset_in(pixel, k))
     }
 }
 
