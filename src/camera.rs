@@ -70,6 +70,7 @@ impl Camera {
     // ANCHOR: ray
     /// The ray through the point `(sx, sy)` ∈ [0,1]² of pixel column `i`,
     /// row `j` (row 0 at the top) of a `width` × `height` image.
+    #[inline]
     pub fn ray(&self, i: u32, j: u32, (sx, sy): (f32, f32), width: u32, height: u32) -> Ray {
         let (w, h) = (width as f32, height as f32);
         let aspect = w / h;

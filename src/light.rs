@@ -12,6 +12,7 @@ pub struct Sky {
 impl Sky {
     // ANCHOR: sky
     /// The radiance arriving from unit direction `d`.
+    #[inline]
     pub fn radiance(&self, d: Vec3) -> Vec3 {
         // The square root widens the bright band near the horizon.
         let t = d.y.clamp(0.0, 1.0).sqrt();

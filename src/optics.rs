@@ -7,6 +7,7 @@ use crate::Vec3;
 /// Mirror `d` about the normal `n` (GLSL `reflect`): `d − 2·dot(d, n)·n`.
 ///
 /// `n` must be unit length; the result is as long as `d`.
+#[inline]
 pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
     d - 2.0 * d.dot(n) * n
 }
@@ -20,6 +21,7 @@ pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
 /// Returns `None` on total internal reflection: when Snell's law asks for
 /// `sin θ₂ = eta · sin θ₁ > 1`, no refracted direction exists (GLSL returns
 /// the zero vector there).
+#[inline]
 pub fn refract(i: Vec3, n: Vec3, eta: f32) -> Option<Vec3> {
     let cos_i = n.dot(i); // negative: `i` points into the surface
     let k = 1.0 - eta * eta * (1.0 - cos_i * cos_i); // = cos² θ₂

@@ -16,6 +16,7 @@ impl Plane {
     ///
     /// Points on the plane satisfy `dot(p − p0, n) = 0`; with `p = o + t·d`
     /// that gives `t = dot(p0 − o, n) / dot(d, n)`.
+    #[inline]
     pub fn intersect(&self, ray: &Ray) -> Option<f32> {
         let denom = ray.direction.dot(self.normal);
         if denom.abs() < 1e-8 {
@@ -37,6 +38,7 @@ pub struct Checker {
 impl Checker {
     // ANCHOR: checker
     /// The albedo at a point on the ground: squares of side 1 in x and z.
+    #[inline]
     pub fn albedo_at(&self, point: Vec3) -> Vec3 {
         // `floor`, not `as i32`: truncation would merge the two squares
         // either side of x = 0 into one double-width stripe.

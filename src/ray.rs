@@ -14,6 +14,7 @@ pub struct Ray {
 
 impl Ray {
     /// A ray from `origin` along `direction`, which must already be normalised.
+    #[inline]
     pub fn new(origin: Vec3, direction: Vec3) -> Self {
         debug_assert!(
             (direction.length() - 1.0).abs() < 1e-4,
@@ -23,6 +24,7 @@ impl Ray {
     }
 
     /// The point at distance `t` along the ray.
+    #[inline]
     pub fn at(&self, t: f32) -> Vec3 {
         self.origin + t * self.direction
     }

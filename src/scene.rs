@@ -187,6 +187,7 @@ impl Scene {
     /// Objects are tested in order (the ground, then the spheres) and only a
     /// strictly nearer hit replaces the best so far, so ties go to the
     /// earlier object.
+    #[inline]
     pub fn nearest_hit(&self, ray: &Ray) -> Option<Hit> {
         let mut nearest = f32::INFINITY;
         let mut object = None;
@@ -206,6 +207,7 @@ impl Scene {
 
     /// Whether the ray meets any surface at all: the shadow-ray query,
     /// which may stop at the first hit it finds.
+    #[inline]
     pub fn any_hit(&self, ray: &Ray) -> bool {
         self.ground.plane.intersect(ray).is_some()
             || self
@@ -216,6 +218,7 @@ impl Scene {
 
     /// Everything about a hit that the shading needs, computed once for
     /// the nearest hit rather than for every candidate.
+    #[inline]
     fn hit_record(&self, ray: &Ray, t: f32, object: Object) -> Hit {
         let point = ray.at(t);
         let (normal, material) = match object {

@@ -18,6 +18,7 @@ impl Sphere {
     /// Points on the ray are `o + t·d`, points on the sphere satisfy
     /// `|p − c|² = R²`. Substituting gives `t² + 2bt + q = 0` with
     /// `b = dot(o − c, d)` and `q = |o − c|² − R²` (because `|d| = 1`).
+    #[inline]
     pub fn intersect(&self, ray: &Ray) -> Option<f32> {
         let oc = ray.origin - self.centre;
         let b = oc.dot(ray.direction);
@@ -37,6 +38,7 @@ impl Sphere {
     // ANCHOR_END: intersect
 
     /// The outward unit normal at a point on the sphere.
+    #[inline]
     pub fn normal_at(&self, point: Vec3) -> Vec3 {
         (point - self.centre).normalize()
     }

@@ -7,10 +7,18 @@
 //! throughput is in rays too (every segment and shadow ray), and it prints
 //! its rays per path once, so that paths/s = Mrays/s ÷ that number.
 //!
+//! Two groups interleave chapters, several rounds of each pair, since the
+//! machine's speed drifts: chapter 5 against chapter 7 (`-- interleaved`),
+//! and chapter 5 against chapter 6 (`-- "path tracer"`), which prints
+//! chapter 6's Mrays/s as a share of chapter 5's and its M paths/s.
+//!
 //! `cargo bench -p raylab-bench`
 
 use ch07_eight_rays::Like;
-use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use std::cell::Cell;
+use std::time::{Duration, Instant};
+
+use criterion::{Criterion, SamplingMode, Throughput, criterion_group, criterion_main};
 use raylab::indicatif::ProgressBar;
 use raylab::{Camera, Sampling, Scene, Settings, Step, render};
 use raylab_cli::{Chapter, Options};
@@ -80,6 +88,85 @@ fn interleaved(c: &mut Criterion) {
     }
 }
 
+/// Chapter 5 (its default, the lab's five rays per pixel) and chapter 6
+/// (16 paths per pixel, lab materials) in turn, several rounds, at
+/// 800 × 600. The two trace different rays, so what is compared is the
+/// cost of one: after each round it prints both chapters' Mrays/s (every
+/// segment and shadow ray counted), chapter 6's as a share of chapter 5's,
+/// and its paths per second. `cargo bench -p raylab-bench -- "path tracer"`
+fn interleaved_path_tracer(c: &mut Criterion) {
+    use ch06_path_tracing::{PathSettings, run};
+    let (options, flags) =
+        run::parse(["ch06-path-tracing", "--spp", "16"]).expect("the defaults parse");
+    let six: PathSettings = run::settings(&options, &flags).expect("valid");
+    let five = Options::defaults(&ch05_antialiasing::CHAPTER)
+        .settings()
+        .expect("the defaults are valid");
+    let step = &ch05_antialiasing::CHAPTER.step;
+    let (scene, camera) = (Scene::lab(), Camera::lab());
+    let hidden = ProgressBar::hidden();
+    let render_five = || step.render_image(&scene, &camera, &five, &hidden);
+    let render_six = || ch06_path_tracing::render(&scene, &camera, &six, &hidden);
+    let rays_five = render_five().counts.total();
+    let first = render_six();
+    let (rays_six, paths_six) = (first.rays, first.paths);
+    for round in 1..=3 {
+        let (tally_five, tally_six) = (Tally::default(), Tally::default());
+        let mut group = c.benchmark_group(format!("path tracer round {round}"));
+        // One iteration of chapter 6 takes about a second: the same number
+        // of them in every sample, not criterion's 1, 2, … 10.
+        group.sampling_mode(SamplingMode::Flat);
+        group.sample_size(10);
+        group.warm_up_time(Duration::from_secs(1));
+        group.throughput(Throughput::Elements(rays_five));
+        group.bench_function("ch05-antialiasing", |b| tally_five.time(b, render_five));
+        group.throughput(Throughput::Elements(rays_six));
+        group.bench_function("ch06-path-tracing 16 spp", |b| {
+            tally_six.time(b, render_six)
+        });
+        group.finish();
+        let (mrays_five, mrays_six) = (
+            tally_five.per_second(rays_five) / 1e6,
+            tally_six.per_second(rays_six) / 1e6,
+        );
+        println!(
+            "path tracer round {round}: ch05 {mrays_five:.1} Mrays/s; ch06 {mrays_six:.1} Mrays/s \
+             ({:.2} × ch05's), {:.2} M paths/s, {:.2} rays per path",
+            mrays_six / mrays_five,
+            tally_six.per_second(paths_six) / 1e6,
+            rays_six as f64 / paths_six as f64
+        );
+    }
+}
+
+/// The renders criterion timed in one benchmark and the time they took,
+/// warm-up included, to print a rate that criterion has no place for.
+#[derive(Default)]
+struct Tally {
+    renders: Cell<u64>,
+    elapsed: Cell<Duration>,
+}
+
+impl Tally {
+    fn time<T>(&self, b: &mut criterion::Bencher<'_>, mut render: impl FnMut() -> T) {
+        b.iter_custom(|iterations| {
+            let start = Instant::now();
+            for _ in 0..iterations {
+                std::hint::black_box(render());
+            }
+            let elapsed = start.elapsed();
+            self.renders.set(self.renders.get() + iterations);
+            self.elapsed.set(self.elapsed.get() + elapsed);
+            elapsed
+        });
+    }
+
+    /// `per_render` things (rays, paths) per second.
+    fn per_second(&self, per_render: u64) -> f64 {
+        (self.renders.get() * per_render) as f64 / self.elapsed.get().as_secs_f64().max(1e-9)
+    }
+}
+
 /// Add `chapter`'s default render to `group`, with its throughput in rays
 /// (one render first, to know how many rays a render traces).
 fn bench_in<S: Step>(
@@ -133,5 +220,11 @@ fn rays_per_pixel(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, chapters, rays_per_pixel, interleaved);
+criterion_group!(
+    benches,
+    chapters,
+    rays_per_pixel,
+    interleaved,
+    interleaved_path_tracer
+);
 criterion_main!(benches);

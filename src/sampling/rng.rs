@@ -51,6 +51,7 @@ pub fn splitmix64(x: u64) -> u64 {
 /// Neighbouring pixels and samples (inputs one bit apart) thus start from
 /// unrelated states; the stream number also picks the PCG increment, so
 /// two kinds of choice for the same sample are different sequences.
+#[inline]
 pub fn sample_rng(seed: u64, pixel: (u32, u32), sample: u32, stream: Stream) -> Pcg32 {
     PixelHash::new(seed, pixel).sample_rng(sample, stream)
 }

@@ -152,6 +152,16 @@ impl PathTracer<'_> {
             Lobe::Diffuse
         }
     }
+
+    /// [`PathTracer::choose_lobe`] with the path's random number, drawn
+    /// only where there is a choice: a matte surface has one lobe.
+    fn draw_lobe(&self, d: Vec3, hit: &Hit, random: &mut Random) -> Lobe {
+        let m = hit.material;
+        if m.reflection() + m.transmission() <= 0.0 {
+            return Lobe::Diffuse;
+        }
+        self.choose_lobe(d, hit, random.uniform())
+    }
     // ANCHOR_END: lobe
 
     // ANCHOR: path
@@ -196,7 +206,7 @@ impl PathTracer<'_> {
                 break;
             };
             let d = ray.direction;
-            let lobe = self.choose_lobe(d, &hit, random.uniform());
+            let lobe = self.draw_lobe(d, &hit, random);
             let direction = match lobe {
                 Lobe::Diffuse => {
                     let albedo = hit.material.albedo();
@@ -204,7 +214,7 @@ impl PathTracer<'_> {
                     // The sun, by next-event estimation: one shadow ray
                     // towards a point of its disc, whose light is
                     // albedo/π · E_sun · cos θ when nothing is in the way.
-                    let to_sun = self.sun.sample(random.uniform(), random.uniform());
+                    let to_sun = self.sun.draw(random);
                     let cos = nf.dot(to_sun);
                     if cos > 0.0 {
                         *rays += 1;
@@ -258,6 +268,8 @@ fn eta(hit: &Hit) -> f32 {
 /// onto the hemisphere). The point on the disc is found by rejection from
 /// the square around it (on average 4/π ≈ 1.27 tries), which needs no
 /// sine or cosine: the random numbers are cheaper than the trigonometry.
+/// With `t`, `b`, `n` orthonormal and `x² + y² + z² = 1` the direction is
+/// of unit length already, to rounding: it needs no normalisation.
 pub fn cosine_direction(n: Vec3, random: &mut Random) -> Vec3 {
     let (x, y, r2) = loop {
         let x = 2.0 * random.uniform() - 1.0;
@@ -269,7 +281,7 @@ pub fn cosine_direction(n: Vec3, random: &mut Random) -> Vec3 {
     };
     let (t, b) = n.any_orthonormal_pair();
     let z = (1.0 - r2).max(0.0).sqrt();
-    (x * t + y * b + z * n).normalize()
+    x * t + y * b + z * n
 }
 // ANCHOR_END: cosine
 

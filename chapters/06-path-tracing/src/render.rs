@@ -15,7 +15,7 @@ use crate::caustics::{CausticMap, KERNEL_RADIUS};
 use crate::integrator::{Materials, PathTracer, Terms};
 use crate::random::Random;
 use crate::sun::Sunlight;
-use raylab::sampling::{Sampling, Stream, sample_rng};
+use raylab::sampling::{PixelHash, Sampling, Stream};
 
 /// What to render.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -91,10 +91,14 @@ fn render_pixel(
     let (mut sum, mut sum_sq) = ([0f64; 3], [0f64; 3]);
     let mut out = PixelSums::default();
     let mut rays = 0u32;
+    // What the pixel's samples share, hashed once: where they go in the
+    // pixel, and the pixel's half of every path's generator.
+    let samples = sampling.pixel(pixel);
+    let hash = PixelHash::new(sampling.seed(), pixel);
     for sample in 0..n {
-        let offset = sampling.offset(pixel, sample);
+        let offset = samples.offset(sample);
         let ray = camera.ray(pixel.0, pixel.1, offset, settings.width, settings.height);
-        let mut random = Random(sample_rng(sampling.seed(), pixel, sample, Stream::Path));
+        let mut random = Random(hash.sample_rng(sample, Stream::Path));
         let terms = tracer.trace(ray, &mut random, &mut rays);
         let radiance = terms.total();
         if !radiance.is_finite() {

@@ -7,6 +7,8 @@ use std::f32::consts::PI;
 use raylab::Vec3;
 use raylab::light::Sun;
 
+use crate::random::Random;
+
 /// The largest `--sun-size`: a disc 180° across is the whole hemisphere
 /// around `L`; a wider "disc" would wrap round onto itself.
 pub const MAX_SUN_SIZE: f32 = 180.0;
@@ -90,6 +92,16 @@ impl Sunlight {
         let d = (1.0 - a) * self.direction
             + sin_theta * (cos_phi * self.tangent + sin_phi * self.bitangent);
         d.normalize()
+    }
+
+    /// [`Sunlight::sample`] with the path's random numbers, drawn only for
+    /// a disc: a point sun is one direction, and takes none.
+    pub fn draw(&self, random: &mut Random) -> Vec3 {
+        if self.is_point() {
+            self.direction
+        } else {
+            self.sample(random.uniform(), random.uniform())
+        }
     }
     // ANCHOR_END: sample
 }
