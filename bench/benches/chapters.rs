@@ -12,7 +12,7 @@
 use ch07_eight_rays::Like;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use raylab::indicatif::ProgressBar;
-use raylab::{Camera, Sampling, Scene, Settings, Step, render};
+use raylab::{Camera, Maps, Sampling, Scene, Settings, Step, render};
 use raylab_cli::{Chapter, Options};
 
 /// Each chapter's program renders with its step's `render_image`: the
@@ -94,7 +94,7 @@ fn bench_in<S: Step>(
     let render = || {
         chapter
             .step
-            .render_image(&scene, &camera, &settings, &hidden)
+            .render_image(&scene, &camera, &settings, Maps::Skip, &hidden)
     };
     group.throughput(Throughput::Elements(render().counts.total()));
     group.bench_function(chapter.binary, |b| b.iter(render));
@@ -122,12 +122,12 @@ fn rays_per_pixel(c: &mut Criterion) {
             epsilon: 1e-4,
             sampling,
         };
-        let rays = render(&scene, &camera, step, &settings, &hidden)
+        let rays = render(&scene, &camera, step, &settings, Maps::Skip, &hidden)
             .counts
             .total();
         group.throughput(Throughput::Elements(rays));
         group.bench_function(name, |b| {
-            b.iter(|| render(&scene, &camera, step, &settings, &hidden))
+            b.iter(|| render(&scene, &camera, step, &settings, Maps::Skip, &hidden))
         });
     }
     group.finish();
