@@ -60,10 +60,7 @@ fn chapters(c: &mut Criterion) {
 
 /// Chapter 7 tracing as chapter 4 does, under its own name in the report.
 fn ch07_like_ch04() -> Chapter<ch07_eight_rays::EightRays> {
-    Chapter {
-        binary: "ch07-eight-rays --like ch04-refraction",
-        ..ch07_eight_rays::chapter(Like::Refraction)
-    }
+    ch07_like(Like::Refraction, "ch07-eight-rays --like ch04-refraction")
 }
 
 /// Chapter 5 and chapter 7 in turn, several rounds: the machine's speed
@@ -77,6 +74,49 @@ fn interleaved(c: &mut Criterion) {
         bench_in(&mut group, &ch05_antialiasing::CHAPTER);
         bench_in(&mut group, &seven);
         group.finish();
+    }
+}
+
+/// The table: each of chapters 1-5 beside chapter 7 tracing as it
+/// (`--like`), in turn, then chapter 5's settings at `--max-depth 1` (the
+/// primary and shadow rays alone) for both tracers: the full-depth rows
+/// less these are the secondary rays' share.
+/// `cargo bench -p raylab-bench -- "by chapter"`
+fn by_chapter(c: &mut Criterion) {
+    let mut group = c.benchmark_group("by chapter");
+    group.sample_size(10);
+    bench_in(&mut group, &ch01_ray_cast::CHAPTER);
+    bench_in(&mut group, &ch07_like(Like::RayCast, "ch07 --like ch01"));
+    bench_in(&mut group, &ch02_shadows::CHAPTER);
+    bench_in(&mut group, &ch07_like(Like::Shadows, "ch07 --like ch02"));
+    bench_in(&mut group, &ch03_reflection::CHAPTER);
+    bench_in(&mut group, &ch07_like(Like::Reflection, "ch07 --like ch03"));
+    bench_in(&mut group, &ch04_refraction::CHAPTER);
+    bench_in(&mut group, &ch07_like(Like::Refraction, "ch07 --like ch04"));
+    bench_in(&mut group, &ch05_antialiasing::CHAPTER);
+    bench_in(
+        &mut group,
+        &ch07_like(Like::AntiAliasing, "ch07 --like ch05"),
+    );
+    let ch05 = Chapter {
+        binary: "ch05 --max-depth 1",
+        max_depth: 1,
+        ..ch05_antialiasing::CHAPTER
+    };
+    bench_in(&mut group, &ch05);
+    let ch07 = Chapter {
+        max_depth: 1,
+        ..ch07_like(Like::AntiAliasing, "ch07 --max-depth 1")
+    };
+    bench_in(&mut group, &ch07);
+    group.finish();
+}
+
+/// Chapter 7 tracing as `like` does, under `binary` in the report.
+fn ch07_like(like: Like, binary: &'static str) -> Chapter<ch07_eight_rays::EightRays> {
+    Chapter {
+        binary,
+        ..ch07_eight_rays::chapter(like)
     }
 }
 
@@ -133,5 +173,5 @@ fn rays_per_pixel(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, chapters, rays_per_pixel, interleaved);
+criterion_group!(benches, chapters, rays_per_pixel, interleaved, by_chapter);
 criterion_main!(benches);

@@ -28,14 +28,22 @@ struct Tally {
 /// Add up the tree under `nodes[depth][index]` into `colour` in the order
 /// the scalar ray stack pops it: a ray's own light first, then its
 /// children's subtrees.
+#[inline]
 fn sum_tree(nodes: &[Vec<Node>], depth: usize, index: usize, colour: &mut Vec3) {
+    // Most samples' trees are their primary ray alone: no call for those.
     *colour += Vec3::from_array(nodes[depth][index].added);
+    if !Node::children(&nodes[depth], index).is_empty() {
+        sum_children(nodes, depth, index, colour);
+    }
+}
+
+/// Add up the subtrees of `nodes[depth][index]`'s children, in order.
+fn sum_children(nodes: &[Vec<Node>], depth: usize, index: usize, colour: &mut Vec3) {
     for child in Node::children(&nodes[depth], index) {
-        // Most rays send nothing on: add those here, without a call.
-        if Node::children(&nodes[depth + 1], child).is_empty() {
-            *colour += Vec3::from_array(nodes[depth + 1][child].added);
-        } else {
-            sum_tree(nodes, depth + 1, child, colour);
+        *colour += Vec3::from_array(nodes[depth + 1][child].added);
+        // Most rays send nothing on: those are done without a call.
+        if !Node::children(&nodes[depth + 1], child).is_empty() {
+            sum_children(nodes, depth + 1, child, colour);
         }
     }
 }
