@@ -150,6 +150,7 @@ fn render_row(
     let waves = &mut worker.waves;
     waves.start(settings.width as usize * spp, setup);
     primary_rays(camera, j, settings, &mut waves.rays[0]);
+    waves.counts.0[RayKind::Primary.index()] += waves.rays[0].len() as u64;
     waves.trace(setup);
 
     let mut tally = Tally {

@@ -255,19 +255,21 @@ impl Waves {
             if !per_sample.rays.is_empty() {
                 per_sample.count(samples, cast_shadow, &mut sends);
             }
-            // The light as plain arrays: one lane at a time from here on.
-            let added = [shaded.added.x, shaded.added.y, shaded.added.z].map(|c| c.to_array());
+            // The group's eight nodes at once: each lane's light, and where
+            // its children will start (after the earlier lanes' children).
+            let [x, y, z] = [shaded.added.x, shaded.added.y, shaded.added.z].map(|c| c.to_array());
             let mut first_child = next.len() as u32;
-            let [x, y, z] = &added;
-            for (lane, ((&x, &y), &z)) in x.iter().zip(y).zip(z).take(lanes).enumerate() {
-                nodes.push(Node {
-                    added: [x, y, z],
+            let group_nodes: [Node; LANES] = std::array::from_fn(|lane| {
+                let node = Node {
+                    added: [x[lane], y[lane], z[lane]],
                     first_child,
-                });
+                };
                 first_child += sends.children(lane);
-            }
+                node
+            });
+            nodes.extend_from_slice(&group_nodes[..lanes]);
             if sends.any() {
-                pack_children(&shaded, &sends, samples, next);
+                pack_children(&shaded, &sends, samples, next, &mut self.counts);
             }
         }
         nodes.push(Node {
@@ -275,9 +277,6 @@ impl Waves {
             first_child: next.len() as u32,
         });
         self.counts.0[RayKind::Shadow.index()] += u64::from(shadows);
-        for kind in &rays.kind[..rays.len()] {
-            self.counts.0[kind.index()] += 1;
-        }
     }
 }
 
@@ -340,12 +339,27 @@ impl Sends {
 
 /// Append the group's transmitted and reflected rays to the next wave,
 /// lane by lane and within a lane in the order the scalar ray stack pops
-/// them (transmitted first). The registers are read out once per group.
-fn pack_children(shaded: &Shaded, sends: &Sends, samples: &[u32], next: &mut Rays) {
-    let transmitted = shaded.transmitted.map(|(from, direction, total)| {
-        let rays = LaneRays::new(from, direction, shaded.transmission);
-        (rays, total.move_mask())
-    });
+/// them (transmitted first), and count them by kind: every ray sent on is
+/// traced. The registers are read out once per group.
+fn pack_children(
+    shaded: &Shaded,
+    sends: &Sends,
+    samples: &[u32],
+    next: &mut Rays,
+    counts: &mut RayCounts,
+) {
+    // Mask: where the light cannot leave the glass, the "transmitted" ray
+    // is the mirror one, and counted as such.
+    let total = shaded.transmitted.map_or(0, |t| t.2.move_mask());
+    let mut count = |kind: RayKind, lanes: i32| {
+        counts.0[kind.index()] += u64::from(lanes.count_ones());
+    };
+    count(RayKind::Reflection, sends.reflects);
+    count(RayKind::Refraction, sends.transmits & !total);
+    count(RayKind::TotalInternalReflection, sends.transmits & total);
+    let transmitted = shaded
+        .transmitted
+        .map(|(from, direction, _)| LaneRays::new(from, direction, shaded.transmission));
     let reflected = shaded
         .reflected
         .map(|(from, direction)| LaneRays::new(from, direction, shaded.reflection));
@@ -354,11 +368,9 @@ fn pack_children(shaded: &Shaded, sends: &Sends, samples: &[u32], next: &mut Ray
         let lane = lanes.trailing_zeros() as usize;
         lanes &= lanes - 1;
         let sample = samples[lane];
-        if let Some((rays, total)) = &transmitted
+        if let Some(rays) = &transmitted
             && sends.transmits & (1 << lane) != 0
         {
-            // Mask: where the light cannot leave the glass, the
-            // "transmitted" ray is the mirror one, and counted as such.
             let kind = if total & (1 << lane) != 0 {
                 RayKind::TotalInternalReflection
             } else {
