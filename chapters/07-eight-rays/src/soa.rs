@@ -204,8 +204,8 @@ impl Rays {
     }
 
     /// Append lane `lane` of eight rays; there must be room for it.
-    // Inlined into the packing loop, the arrays' addresses stay in
-    // registers from one ray to the next: twice as fast here.
+    // Always inlined: as a call of its own (the compiler's choice), it
+    // was 14 % of a render's time in the profile.
     #[inline(always)]
     pub fn push_lane(&mut self, rays: &LaneRays, lane: usize, sample: u32, kind: RayKind) {
         let (o, d) = (&rays.origin, &rays.direction);
