@@ -226,7 +226,9 @@ impl Rays {
         kind: RayKind,
     ) {
         let count = samples.len();
-        self.make_room(count);
+        // All eight lanes are written (a copy of known size, inlined) and
+        // `len` moves on by `count`: the padding lanes are overwritten next.
+        self.make_room(LANES);
         let numbers = [
             origins.x,
             origins.y,
@@ -236,11 +238,11 @@ impl Rays {
             directions.z,
             weights,
         ];
-        let at = self.len..self.len + count;
+        let at = self.len..self.len + LANES;
         for (to, from) in self.numbers_mut().into_iter().zip(numbers) {
-            to[at.clone()].copy_from_slice(&from.as_array_ref()[..count]);
+            to[at.clone()].copy_from_slice(from.as_array_ref());
         }
-        self.sample[at.clone()].copy_from_slice(samples);
+        self.sample[self.len..self.len + count].copy_from_slice(samples);
         self.kind[at].fill(kind);
         self.len += count;
     }

@@ -267,7 +267,11 @@ impl Waves {
                 first_child += sends.children(lane);
                 node
             });
-            nodes.extend_from_slice(&group_nodes[..lanes]);
+            // All eight copied (a copy of known size, inlined), then the
+            // padding lanes' dropped: cheaper than a copy of `lanes`.
+            let before = nodes.len();
+            nodes.extend_from_slice(&group_nodes);
+            nodes.truncate(before + lanes);
             if sends.any() {
                 pack_children(&shaded, &sends, samples, next, &mut self.counts);
             }
