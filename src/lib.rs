@@ -40,7 +40,7 @@ pub use indicatif;
 pub use camera::Camera;
 pub use material::Material;
 pub use ray::{Ray, RayKind};
-pub use render::{Rendered, Settings, render, render_every_depth};
+pub use render::{Maps, PixelMaps, Rendered, Settings, render, render_every_depth};
 pub use sampling::{Pattern, Sampling};
 pub use scene::{Hit, Object, Scene};
 pub use trace::{Step, Surface, Tracer};

@@ -27,15 +27,45 @@ pub struct Settings {
     pub sampling: Sampling,
 }
 
+/// Whether a render keeps the per-pixel maps that the heat-map diagrams
+/// draw. A program that draws no diagrams (`--no-diagrams`) skips them:
+/// the image is the same either way, only the bookkeeping is saved.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Maps {
+    Keep,
+    Skip,
+}
+
+/// Per pixel, what its ray trees cost: the heat maps' numbers.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PixelMaps {
+    /// Per pixel: the depth of the deepest ray of its trees.
+    pub deepest: Vec<u8>,
+    /// Per pixel: every ray traced for it, shadow rays included.
+    pub rays: Vec<u32>,
+}
+
+impl PixelMaps {
+    /// Zeroed maps of `pixels` pixels, first touched on every core (see
+    /// [`render`]).
+    pub fn zeroed(pixels: usize) -> PixelMaps {
+        let mut maps = PixelMaps {
+            deepest: Vec::with_capacity(pixels),
+            rays: Vec::with_capacity(pixels),
+        };
+        maps.deepest.par_extend(rayon::iter::repeat_n(0, pixels));
+        maps.rays.par_extend(rayon::iter::repeat_n(0, pixels));
+        maps
+    }
+}
+
 /// A rendered image, with what the renderer did to make it.
 #[derive(Clone, Debug)]
 pub struct Rendered {
     pub settings: Settings,
     pub image: LinearImage,
-    /// Per pixel: the depth of the deepest ray of its trees.
-    pub deepest: Vec<u8>,
-    /// Per pixel: every ray traced for it, shadow rays included.
-    pub rays: Vec<u32>,
+    /// The depth and ray-count maps, when the render was asked to keep them.
+    pub maps: Option<PixelMaps>,
     pub counts: RayCounts,
     pub elapsed: Duration,
     /// Pixels whose colour came out NaN or infinite and were set to black.
@@ -98,12 +128,14 @@ impl std::ops::Add for RowTally {
 }
 
 /// Render `scene` through `camera` with a chapter's `step`, one image row
-/// per task on every core, ticking `progress` once per row.
+/// per task on every core, ticking `progress` once per row; with
+/// [`Maps::Keep`], the per-pixel depth and ray-count maps too.
 pub fn render<S: Step + ?Sized>(
     scene: &Scene,
     camera: &Camera,
     step: &S,
     settings: &Settings,
+    maps: Maps,
     progress: &ProgressBar,
 ) -> Rendered {
     let (width, height) = (settings.width as usize, settings.height as usize);
@@ -114,23 +146,21 @@ pub fn render<S: Step + ?Sized>(
     // at 800 × 600 that alone took 5 ms before the first ray.
     let mut colours = Vec::with_capacity(width * height);
     colours.par_extend(rayon::iter::repeat_n(Vec3::ZERO, width * height));
-    let mut deepest = vec![0u8; width * height];
-    let mut rays = vec![0u32; width * height];
+    let mut pixel_maps = (maps == Maps::Keep).then(|| PixelMaps::zeroed(width * height));
+    let map_rows = map_rows(pixel_maps.as_mut(), width, height);
     // ANCHOR: rows
     let tally = colours
         .par_chunks_mut(width)
-        .zip(deepest.par_chunks_mut(width))
-        .zip(rays.par_chunks_mut(width))
+        .zip(map_rows)
         .enumerate()
         // One tracer (and so one ray stack) per worker, made once and
         // borrowed for every row that worker renders.
         .map_init(
             || Tracer::new(scene, step, settings.max_depth, settings.epsilon),
-            |tracer, (j, ((colour_row, deepest_row), rays_row))| {
+            |tracer, (j, (colour_row, mut map_row))| {
                 let before = tracer.counts();
                 let mut row = RowTally::default();
-                let outputs = colour_row.iter_mut().zip(deepest_row).zip(rays_row);
-                for (i, ((colour, deepest), rays)) in outputs.enumerate() {
+                for (i, colour) in colour_row.iter_mut().enumerate() {
                     let pixel = render_pixel(tracer, camera, (i as u32, j as u32), settings);
                     *colour = if pixel.colour.is_finite() {
                         pixel.colour
@@ -138,8 +168,9 @@ pub fn render<S: Step + ?Sized>(
                         row.non_finite += 1;
                         Vec3::ZERO
                     };
-                    *deepest = pixel.deepest;
-                    *rays = pixel.rays;
+                    if let Some((deepest, rays)) = &mut map_row {
+                        (deepest[i], rays[i]) = (pixel.deepest, pixel.rays);
+                    }
                     row.over_budget += u64::from(pixel.over_budget);
                 }
                 progress.inc(1);
@@ -152,13 +183,31 @@ pub fn render<S: Step + ?Sized>(
     Rendered {
         settings: *settings,
         image: LinearImage::from_pixels(settings.width, settings.height, colours),
-        deepest,
-        rays,
+        maps: pixel_maps,
         counts: tally.counts,
         elapsed: start.elapsed(),
         non_finite: tally.non_finite,
         over_budget: tally.over_budget,
     }
+}
+
+/// The maps' rows, one per image row, to hand out with the colour rows;
+/// `None` for every row when the maps are not kept.
+pub fn map_rows(
+    maps: Option<&mut PixelMaps>,
+    width: usize,
+    height: usize,
+) -> impl IndexedParallelIterator<Item = Option<(&mut [u8], &mut [u32])>> {
+    let rows: Vec<Option<(&mut [u8], &mut [u32])>> = match maps {
+        Some(maps) => maps
+            .deepest
+            .chunks_mut(width)
+            .zip(maps.rays.chunks_mut(width))
+            .map(Some)
+            .collect(),
+        None => (0..height).map(|_| None).collect(),
+    };
+    rows.into_par_iter()
 }
 
 impl Rendered {

@@ -1,7 +1,7 @@
 //! How the chapters relate: each one changes only what its step adds.
 
 use raylab::indicatif::ProgressBar;
-use raylab::{Camera, Rendered, Sampling, Scene, Settings, Step, Tracer, Vec3, render};
+use raylab::{Camera, Maps, Rendered, Sampling, Scene, Settings, Step, Tracer, Vec3, render};
 
 fn settings(max_depth: u32, spp: u32) -> Settings {
     Settings {
@@ -19,6 +19,7 @@ fn render_with<S: Step + ?Sized>(step: &S, settings: &Settings) -> Rendered {
         &Camera::lab(),
         step,
         settings,
+        Maps::Skip,
         &ProgressBar::hidden(),
     )
 }

@@ -6,7 +6,7 @@ use std::path::Path;
 use ch07_eight_rays::{EightRays, Like, render::render_waves};
 use raylab::indicatif::ProgressBar;
 use raylab::sampling::Pattern;
-use raylab::{Camera, RayKind, Sampling, Scene, Settings, Step, render};
+use raylab::{Camera, Maps, RayKind, Sampling, Scene, Settings, Step, render};
 
 /// The scalar chapter that `like` imitates, as a step.
 fn scalar_step(like: Like) -> &'static dyn Step {
@@ -33,8 +33,16 @@ fn settings(like: Like, (width, height): (u32, u32)) -> Settings {
 /// give the same bytes, ray counts and per-pixel maps.
 fn assert_same(like: Like, scene: &Scene, camera: &Camera, settings: &Settings) {
     let hidden = ProgressBar::hidden();
-    let scalar = render(scene, camera, scalar_step(like), settings, &hidden);
-    let waves = render_waves(scene, camera, &EightRays { like }, settings, &hidden);
+    let scalar = render(
+        scene,
+        camera,
+        scalar_step(like),
+        settings,
+        Maps::Keep,
+        &hidden,
+    );
+    let step = EightRays { like };
+    let waves = render_waves(scene, camera, &step, settings, Maps::Keep, &hidden);
     let what = format!("like {} at {settings}", like.binary());
     assert!(
         scalar.image.to_srgb8() == waves.image.to_srgb8(),
@@ -52,8 +60,9 @@ fn assert_same(like: Like, scene: &Scene, camera: &Camera, settings: &Settings) 
             kind.name()
         );
     }
-    assert_eq!(scalar.deepest, waves.deepest, "{what}: depth map");
-    assert_eq!(scalar.rays, waves.rays, "{what}: ray-count map");
+    let (scalar_maps, wave_maps) = (scalar.maps.expect("kept"), waves.maps.expect("kept"));
+    assert_eq!(scalar_maps.deepest, wave_maps.deepest, "{what}: depth map");
+    assert_eq!(scalar_maps.rays, wave_maps.rays, "{what}: ray-count map");
     assert_eq!(scalar.over_budget, waves.over_budget, "{what}: over budget");
 }
 
@@ -134,4 +143,22 @@ fn with_no_offset_the_trees_that_reach_the_ray_budget_are_the_same() {
     s.epsilon = 0.0;
     s.max_depth = 24;
     assert_same(Like::Refraction, &scene, &camera, &s);
+}
+
+#[test]
+fn without_the_maps_both_tracers_make_the_same_image_and_keep_no_maps() {
+    let (scene, camera) = (Scene::lab(), Camera::lab());
+    let settings = settings(Like::AntiAliasing, (83, 61));
+    let hidden = ProgressBar::hidden();
+    let step = EightRays {
+        like: Like::AntiAliasing,
+    };
+    let kept = render_waves(&scene, &camera, &step, &settings, Maps::Keep, &hidden);
+    let scalar = render(&scene, &camera, &step, &settings, Maps::Skip, &hidden);
+    let waves = render_waves(&scene, &camera, &step, &settings, Maps::Skip, &hidden);
+    for skipped in [&scalar, &waves] {
+        assert!(skipped.maps.is_none());
+        assert_eq!(skipped.image, kept.image);
+        assert_eq!(skipped.counts, kept.counts);
+    }
 }

@@ -3,7 +3,7 @@
 //! `RAYLAB_BLESS=1 cargo test -p raylab-tests --test golden` and look at the result.
 
 use raylab::indicatif::ProgressBar;
-use raylab::{Camera, Scene, Step, render};
+use raylab::{Camera, Maps, Scene, Step, render};
 use raylab_cli::{Chapter, Options};
 use raylab_tests::check_golden;
 
@@ -19,6 +19,7 @@ fn render_small<S: Step>(chapter: &Chapter<S>) -> raylab::Rendered {
         &Camera::lab(),
         &chapter.step,
         &settings,
+        Maps::Skip,
         &ProgressBar::hidden(),
     );
     assert_eq!(rendered.non_finite, 0, "no pixel may be NaN or infinite");

@@ -3,7 +3,7 @@
 //! pattern is random.
 
 use raylab::indicatif::ProgressBar;
-use raylab::{Camera, Pattern, Sampling, Scene, Settings, Tracer, Vec3, render};
+use raylab::{Camera, Maps, Pattern, Sampling, Scene, Settings, Tracer, Vec3, render};
 
 const STEP: ch05_antialiasing::Refraction = ch05_antialiasing::Refraction;
 
@@ -28,6 +28,7 @@ fn render_on(threads: usize, settings: &Settings) -> image::RgbImage {
             &Camera::lab(),
             &STEP,
             settings,
+            Maps::Skip,
             &ProgressBar::hidden(),
         )
     })
@@ -53,7 +54,14 @@ fn pixels_traced_one_by_one_backwards_match_the_parallel_render() {
     // pixels last row first, right to left, on one tracer changes nothing.
     let settings = settings(9, Pattern::Halton, 7);
     let (scene, camera) = (Scene::lab(), Camera::lab());
-    let rendered = render(&scene, &camera, &STEP, &settings, &ProgressBar::hidden());
+    let rendered = render(
+        &scene,
+        &camera,
+        &STEP,
+        &settings,
+        Maps::Skip,
+        &ProgressBar::hidden(),
+    );
     let mut tracer = Tracer::new(&scene, &STEP, settings.max_depth, settings.epsilon);
     for j in (0..settings.height).rev() {
         for i in (0..settings.width).rev() {

@@ -20,7 +20,7 @@ use std::time::{Duration, Instant};
 
 use criterion::{Criterion, SamplingMode, Throughput, criterion_group, criterion_main};
 use raylab::indicatif::ProgressBar;
-use raylab::{Camera, Sampling, Scene, Settings, Step, render};
+use raylab::{Camera, Maps, Sampling, Scene, Settings, Step, render};
 use raylab_cli::{Chapter, Options};
 
 /// Each chapter's program renders with its step's `render_image`: the
@@ -68,10 +68,7 @@ fn chapters(c: &mut Criterion) {
 
 /// Chapter 7 tracing as chapter 4 does, under its own name in the report.
 fn ch07_like_ch04() -> Chapter<ch07_eight_rays::EightRays> {
-    Chapter {
-        binary: "ch07-eight-rays --like ch04-refraction",
-        ..ch07_eight_rays::chapter(Like::Refraction)
-    }
+    ch07_like(Like::Refraction, "ch07-eight-rays --like ch04-refraction")
 }
 
 /// Chapter 5 and chapter 7 in turn, several rounds: the machine's speed
@@ -105,7 +102,7 @@ fn interleaved_path_tracer(c: &mut Criterion) {
     let step = &ch05_antialiasing::CHAPTER.step;
     let (scene, camera) = (Scene::lab(), Camera::lab());
     let hidden = ProgressBar::hidden();
-    let render_five = || step.render_image(&scene, &camera, &five, &hidden);
+    let render_five = || step.render_image(&scene, &camera, &five, Maps::Skip, &hidden);
     let render_six = || ch06_path_tracing::render(&scene, &camera, &six, &hidden);
     let rays_five = render_five().counts.total();
     let first = render_six();
@@ -167,6 +164,49 @@ impl Tally {
     }
 }
 
+/// The table: each of chapters 1-5 beside chapter 7 tracing as it
+/// (`--like`), in turn, then chapter 5's settings at `--max-depth 1` (the
+/// primary and shadow rays alone) for both tracers: the full-depth rows
+/// less these are the secondary rays' share.
+/// `cargo bench -p raylab-bench -- "by chapter"`
+fn by_chapter(c: &mut Criterion) {
+    let mut group = c.benchmark_group("by chapter");
+    group.sample_size(10);
+    bench_in(&mut group, &ch01_ray_cast::CHAPTER);
+    bench_in(&mut group, &ch07_like(Like::RayCast, "ch07 --like ch01"));
+    bench_in(&mut group, &ch02_shadows::CHAPTER);
+    bench_in(&mut group, &ch07_like(Like::Shadows, "ch07 --like ch02"));
+    bench_in(&mut group, &ch03_reflection::CHAPTER);
+    bench_in(&mut group, &ch07_like(Like::Reflection, "ch07 --like ch03"));
+    bench_in(&mut group, &ch04_refraction::CHAPTER);
+    bench_in(&mut group, &ch07_like(Like::Refraction, "ch07 --like ch04"));
+    bench_in(&mut group, &ch05_antialiasing::CHAPTER);
+    bench_in(
+        &mut group,
+        &ch07_like(Like::AntiAliasing, "ch07 --like ch05"),
+    );
+    let ch05 = Chapter {
+        binary: "ch05 --max-depth 1",
+        max_depth: 1,
+        ..ch05_antialiasing::CHAPTER
+    };
+    bench_in(&mut group, &ch05);
+    let ch07 = Chapter {
+        max_depth: 1,
+        ..ch07_like(Like::AntiAliasing, "ch07 --max-depth 1")
+    };
+    bench_in(&mut group, &ch07);
+    group.finish();
+}
+
+/// Chapter 7 tracing as `like` does, under `binary` in the report.
+fn ch07_like(like: Like, binary: &'static str) -> Chapter<ch07_eight_rays::EightRays> {
+    Chapter {
+        binary,
+        ..ch07_eight_rays::chapter(like)
+    }
+}
+
 /// Add `chapter`'s default render to `group`, with its throughput in rays
 /// (one render first, to know how many rays a render traces).
 fn bench_in<S: Step>(
@@ -181,7 +221,7 @@ fn bench_in<S: Step>(
     let render = || {
         chapter
             .step
-            .render_image(&scene, &camera, &settings, &hidden)
+            .render_image(&scene, &camera, &settings, Maps::Skip, &hidden)
     };
     group.throughput(Throughput::Elements(render().counts.total()));
     group.bench_function(chapter.binary, |b| b.iter(render));
@@ -209,12 +249,12 @@ fn rays_per_pixel(c: &mut Criterion) {
             epsilon: 1e-4,
             sampling,
         };
-        let rays = render(&scene, &camera, step, &settings, &hidden)
+        let rays = render(&scene, &camera, step, &settings, Maps::Skip, &hidden)
             .counts
             .total();
         group.throughput(Throughput::Elements(rays));
         group.bench_function(name, |b| {
-            b.iter(|| render(&scene, &camera, step, &settings, &hidden))
+            b.iter(|| render(&scene, &camera, step, &settings, Maps::Skip, &hidden))
         });
     }
     group.finish();
@@ -225,6 +265,7 @@ criterion_group!(
     chapters,
     rays_per_pixel,
     interleaved,
-    interleaved_path_tracer
+    interleaved_path_tracer,
+    by_chapter
 );
 criterion_main!(benches);

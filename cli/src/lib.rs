@@ -27,7 +27,7 @@ use crate::probe_text::Listing;
 use crate::scene_file::SceneFileError;
 use raylab::camera::Camera;
 use raylab::probe::{self, ProbeTarget};
-use raylab::render::{Rendered, Settings, render_every_depth};
+use raylab::render::{Maps, Rendered, Settings, render_every_depth};
 use raylab::sampling::{MAX_SPP, Pattern, Sampling, SamplingError};
 use raylab::scene::Scene;
 use raylab::stack::MAX_DEPTH_LIMIT;
@@ -378,9 +378,16 @@ pub fn run<S: Step>(chapter: &Chapter<S>, options: &Options) -> Result<Report, C
     prepare_out_dir(&out_dir)?;
 
     let progress = progress_bar(u64::from(settings.height), options.quiet);
+    // The depth and ray-count maps are only worth their bookkeeping when
+    // the heat maps are drawn.
+    let maps = if options.no_diagrams {
+        Maps::Skip
+    } else {
+        Maps::Keep
+    };
     let rendered = chapter
         .step
-        .render_image(&scene, &camera, &settings, &progress);
+        .render_image(&scene, &camera, &settings, maps, &progress);
     progress.finish_and_clear();
 
     let render_png = out_dir.join("render.png");
@@ -456,20 +463,29 @@ fn write_diagrams<S: Step>(
 ) -> Result<(), CliError> {
     let settings = report.rendered.settings;
     let dir = report.out_dir.clone();
+    // `run` asked for the maps whenever diagrams are drawn.
+    let heat_maps = report.rendered.maps.as_ref().map(|maps| {
+        let rendered = &report.rendered;
+        [
+            (
+                "depth.png",
+                heatmaps::depth_figure(chapter.binary, rendered, maps),
+            ),
+            (
+                "rays.png",
+                heatmaps::rays_figure(chapter.binary, rendered, maps),
+            ),
+        ]
+    });
     let mut png = |name: &str, image: &image::RgbImage| -> Result<(), CliError> {
         let path = dir.join(name);
         save_png(image, &path)?;
         report.written.push(path);
         Ok(())
     };
-    png(
-        "depth.png",
-        &heatmaps::depth_figure(chapter.binary, &report.rendered),
-    )?;
-    png(
-        "rays.png",
-        &heatmaps::rays_figure(chapter.binary, &report.rendered),
-    )?;
+    for (name, figure) in heat_maps.iter().flatten() {
+        png(name, figure)?;
+    }
 
     let pixel = options.probe.or_else(|| {
         // A scene of one's own may not hold the chapter's sphere: then the

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use image::RgbImage;
 use raylab::indicatif::ProgressBar;
 use raylab::sampling::LAB_FIVE;
-use raylab::{Camera, Sampling, Scene, Settings, Step, render};
+use raylab::{Camera, Maps, Sampling, Scene, Settings, Step, render};
 use raylab_cli::output::save_png;
 use raylab_plot::colour::{AXIS, GRID, TEXT, TEXT_MUTED, WHITE};
 use raylab_plot::{Anchor, Canvas};
@@ -36,9 +36,16 @@ fn settings(size: Size, max_depth: u32, spp: u32, epsilon: f32) -> Settings {
 
 fn render_srgb<S: Step>(step: &S, settings: &Settings) -> RgbImage {
     let (scene, camera) = (Scene::lab(), Camera::lab());
-    render(&scene, &camera, step, settings, &ProgressBar::hidden())
-        .image
-        .to_srgb8()
+    render(
+        &scene,
+        &camera,
+        step,
+        settings,
+        Maps::Skip,
+        &ProgressBar::hidden(),
+    )
+    .image
+    .to_srgb8()
 }
 
 /// The same region on the horizon, right of the red sphere, where the
@@ -102,6 +109,7 @@ pub fn make_scene_figures(dir: &Path, scenes: &Path, size: Size) -> Result<Vec<P
             &camera,
             &ch04_refraction::Refraction,
             &settings,
+            Maps::Skip,
             &ProgressBar::hidden(),
         )
         .image

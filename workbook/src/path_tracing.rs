@@ -136,8 +136,9 @@ fn whitted_image(width: u32, height: u32) -> LinearImage {
     raylab::render(
         &Scene::lab(),
         &Camera::lab(),
-        &ch05_antialiasing::Refraction,
+        &ch05_antialiasing::CHAPTER.step,
         &settings,
+        raylab::Maps::Skip,
         &ProgressBar::hidden(),
     )
     .image

@@ -31,7 +31,7 @@ use ch02_shadows::Shadows;
 use ch03_reflection::Reflection;
 use ch04_refraction::Refraction;
 use raylab::indicatif::ProgressBar;
-use raylab::{Camera, Hit, Ray, Rendered, Scene, Settings, Step, Surface, Vec3};
+use raylab::{Camera, Hit, Maps, Ray, Rendered, Scene, Settings, Step, Surface, Vec3};
 use raylab_cli::Chapter;
 
 pub use like::Like;
@@ -61,9 +61,10 @@ impl Step for EightRays {
         scene: &Scene,
         camera: &Camera,
         settings: &Settings,
+        maps: Maps,
         progress: &ProgressBar,
     ) -> Rendered {
-        render::render_waves(scene, camera, self, settings, progress)
+        render::render_waves(scene, camera, self, settings, maps, progress)
     }
 }
 

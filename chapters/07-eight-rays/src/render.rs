@@ -5,8 +5,9 @@ use std::time::Instant;
 
 use raylab::indicatif::ProgressBar;
 use raylab::linear_image::LinearImage;
+use raylab::render::map_rows;
 use raylab::trace::RayCounts;
-use raylab::{Camera, RayKind, Rendered, Scene, Settings, Tracer, Vec3};
+use raylab::{Camera, Maps, PixelMaps, RayKind, Rendered, Scene, Settings, Tracer, Vec3};
 use rayon::prelude::*;
 
 use crate::EightRays;
@@ -23,51 +24,38 @@ struct Tally {
     over_budget: u64,
 }
 
-/// One sample's tree, summed: its colour and what it cost.
-#[derive(Clone, Copy, Default)]
-struct Sum {
-    colour: Vec3,
-    deepest: u32,
-    rays: u32,
-}
-
 // ANCHOR: sum
-/// Add up the tree under `nodes[depth][index]` in the order the scalar ray
-/// stack pops it: a ray's own light first, then its children's subtrees.
-fn sum_tree(nodes: &[Vec<Node>], depth: usize, index: usize, sum: &mut Sum) {
-    let node = &nodes[depth][index];
-    sum.add(node, depth);
-    let first = node.first_child as usize;
-    for child in first..first + usize::from(node.children) {
-        let leaf = &nodes[depth + 1][child];
-        // Most rays send nothing on: add those here, without a call.
-        if leaf.children == 0 {
-            sum.add(leaf, depth + 1);
-        } else {
-            sum_tree(nodes, depth + 1, child, sum);
-        }
+/// Add up the tree under `nodes[depth][index]` into `colour` in the order
+/// the scalar ray stack pops it: a ray's own light first, then its
+/// children's subtrees.
+#[inline]
+fn sum_tree(nodes: &[Vec<Node>], depth: usize, index: usize, colour: &mut Vec3) {
+    // Most samples' trees are their primary ray alone: no call for those.
+    *colour += Vec3::from_array(nodes[depth][index].added);
+    if !Node::children(&nodes[depth], index).is_empty() {
+        sum_children(nodes, depth, index, colour);
     }
 }
 
-impl Sum {
-    /// Add one ray of depth `depth + 1`: its light, its depth, its rays.
-    fn add(&mut self, node: &Node, depth: usize) {
-        self.colour += node.added;
-        self.deepest = self.deepest.max(depth as u32 + 1);
-        self.rays += 1 + u32::from(node.shadow);
+/// Add up the subtrees of `nodes[depth][index]`'s children, in order.
+fn sum_children(nodes: &[Vec<Node>], depth: usize, index: usize, colour: &mut Vec3) {
+    for child in Node::children(&nodes[depth], index) {
+        *colour += Vec3::from_array(nodes[depth + 1][child].added);
+        // Most rays send nothing on: those are done without a call.
+        if !Node::children(&nodes[depth + 1], child).is_empty() {
+            sum_children(nodes, depth + 1, child, colour);
+        }
     }
 }
 // ANCHOR_END: sum
 
 /// The rays of a tree by kind, to take a tree's wave-traced part back out
 /// of the counts when the scalar tracer traces that sample again.
-fn count_tree(nodes: &[Vec<Node>], depth: usize, index: usize, counts: &mut RayCounts) {
-    let node = &nodes[depth][index];
-    counts.0[node.kind.index()] += 1;
-    counts.0[RayKind::Shadow.index()] += u64::from(node.shadow);
-    let first = node.first_child as usize;
-    for child in first..first + usize::from(node.children) {
-        count_tree(nodes, depth + 1, child, counts);
+fn count_tree(waves: &Waves, depth: usize, index: usize, counts: &mut RayCounts) {
+    counts.0[waves.rays[depth].kind[index].index()] += 1;
+    counts.0[RayKind::Shadow.index()] += u64::from(waves.cast_shadow[depth][index]);
+    for child in Node::children(&waves.nodes[depth], index) {
+        count_tree(waves, depth + 1, child, counts);
     }
 }
 
@@ -79,12 +67,14 @@ struct Worker<'s> {
 }
 
 /// Render `scene` as `step`'s chapter would, eight rays at a time; the
-/// image, the ray counts and the per-pixel maps equal `raylab::render`'s.
+/// image, the ray counts and (with [`Maps::Keep`]) the per-pixel maps
+/// equal `raylab::render`'s.
 pub fn render_waves(
     scene: &Scene,
     camera: &Camera,
     step: &EightRays,
     settings: &Settings,
+    maps: Maps,
     progress: &ProgressBar,
 ) -> Rendered {
     let start = Instant::now();
@@ -96,34 +86,30 @@ pub fn render_waves(
         features,
         max_depth: settings.max_depth,
         epsilon: settings.epsilon,
+        maps: maps == Maps::Keep,
     };
     let mut colours = Vec::with_capacity(width * height);
     colours.par_extend(rayon::iter::repeat_n(Vec3::ZERO, width * height));
-    let mut deepest = vec![0u8; width * height];
-    let mut rays = vec![0u32; width * height];
+    let mut pixel_maps = setup.maps.then(|| PixelMaps::zeroed(width * height));
+    let map_rows = map_rows(pixel_maps.as_mut(), width, height);
     let tally = colours
         .par_chunks_mut(width)
-        .zip(deepest.par_chunks_mut(width))
-        .zip(rays.par_chunks_mut(width))
+        .zip(map_rows)
         .enumerate()
         .map_init(
             || Worker {
                 waves: Waves::default(),
                 scalar: Tracer::new(scene, step, settings.max_depth, settings.epsilon),
             },
-            |worker, (j, ((colour_row, deepest_row), rays_row))| {
-                let row = render_row(
-                    worker,
-                    &setup,
-                    camera,
-                    settings,
-                    j as u32,
-                    colour_row,
-                    deepest_row,
-                    rays_row,
-                );
+            |worker, (j, (colour_row, map_row))| {
+                let row = Row {
+                    j: j as u32,
+                    colours: colour_row,
+                    maps: map_row,
+                };
+                let tally = render_row(worker, &setup, camera, settings, row);
                 progress.inc(1);
-                row
+                tally
             },
         )
         .reduce(Tally::default, |a, b| Tally {
@@ -134,8 +120,7 @@ pub fn render_waves(
     Rendered {
         settings: *settings,
         image: LinearImage::from_pixels(settings.width, settings.height, colours),
-        deepest,
-        rays,
+        maps: pixel_maps,
         counts: tally.counts,
         elapsed: start.elapsed(),
         non_finite: tally.non_finite,
@@ -143,56 +128,62 @@ pub fn render_waves(
     }
 }
 
+/// One image row's outputs: its colours and, when kept, its maps' rows.
+struct Row<'a> {
+    j: u32,
+    colours: &'a mut [Vec3],
+    maps: Option<(&'a mut [u8], &'a mut [u32])>,
+}
+
 // ANCHOR: row
 /// One image row: its primary rays as wave 1, every wave traced, then
 /// each pixel's samples summed in the pattern's order.
-#[allow(clippy::too_many_arguments)]
 fn render_row(
     worker: &mut Worker,
     setup: &Setup,
     camera: &Camera,
     settings: &Settings,
-    j: u32,
-    colour_row: &mut [Vec3],
-    deepest_row: &mut [u8],
-    rays_row: &mut [u32],
+    mut row: Row,
 ) -> Tally {
     let spp = settings.sampling.spp() as usize;
-    let (w, h) = (settings.width, settings.height);
+    let j = row.j;
     let waves = &mut worker.waves;
-    waves.start(w as usize * spp, settings.max_depth);
+    waves.start(settings.width as usize * spp, setup);
     primary_rays(camera, j, settings, &mut waves.rays[0]);
+    waves.counts.0[RayKind::Primary.index()] += waves.rays[0].len() as u64;
     waves.trace(setup);
 
     let mut tally = Tally {
         counts: waves.counts,
         ..Tally::default()
     };
-    let pixels = colour_row.iter_mut().zip(deepest_row).zip(rays_row);
-    for (i, ((colour, deepest), rays)) in pixels.enumerate() {
+    for (i, colour) in row.colours.iter_mut().enumerate() {
         let mut sum = Vec3::ZERO;
-        let mut pixel = Sum::default();
+        let (mut deepest, mut rays) = (0, 0);
         for k in 0..spp {
             let sample = i * spp + k;
-            let mut traced = Sum::default();
+            let mut traced = Vec3::ZERO;
             if waves.over_budget(sample) {
                 let mut waved = RayCounts::default();
-                count_tree(&waves.nodes, 0, sample, &mut waved);
+                count_tree(waves, 0, sample, &mut waved);
                 tally.counts = tally.counts - waved;
                 let before = worker.scalar.counts();
                 let offset = settings.sampling.offset((i as u32, j), k as u32);
-                let ray = camera.ray(i as u32, j, offset, w, h);
+                let ray = camera.ray(i as u32, j, offset, settings.width, settings.height);
                 let scalar = worker.scalar.trace(ray);
                 tally.counts = tally.counts + (worker.scalar.counts() - before);
                 tally.over_budget += u64::from(scalar.over_budget);
-                (traced.colour, traced.deepest, traced.rays) =
-                    (scalar.colour, scalar.deepest, scalar.rays);
+                traced = scalar.colour;
+                deepest = deepest.max(scalar.deepest as u8);
+                rays += scalar.rays;
             } else {
                 sum_tree(&waves.nodes, 0, sample, &mut traced);
+                if setup.maps {
+                    deepest = deepest.max(waves.sample_deepest[sample]);
+                    rays += waves.sample_rays[sample];
+                }
             }
-            sum += traced.colour;
-            pixel.deepest = pixel.deepest.max(traced.deepest);
-            pixel.rays += traced.rays;
+            sum += traced;
         }
         let average = sum / spp as f32;
         *colour = if average.is_finite() {
@@ -201,8 +192,9 @@ fn render_row(
             tally.non_finite += 1;
             Vec3::ZERO
         };
-        *deepest = pixel.deepest as u8;
-        *rays = pixel.rays;
+        if let Some((deepest_row, rays_row)) = &mut row.maps {
+            (deepest_row[i], rays_row[i]) = (deepest, rays);
+        }
     }
     tally
 }

@@ -7,28 +7,37 @@
 //! to its sample, and where its children are in the next wave. The sample's
 //! colour is then summed by walking its tree in the scalar tracer's order,
 //! so the sums round exactly as chapter 5's do.
+//!
+//! Everything a node does not need for that sum is counted a group at a
+//! time (the rays by kind) or per sample (its rays and depth, for the
+//! heat maps), and the latter only when it is asked for.
 
+use raylab::RayKind;
 use raylab::trace::{RAY_BUDGET, RayCounts};
-use raylab::{RayKind, Vec3};
 use wide::f32x8;
 
 use crate::intersect::{SceneX8, senders};
 use crate::like::Features;
 use crate::shade::{Light, reflect, refract};
-use crate::soa::{LANES, Rays, Vec3x8};
+use crate::soa::{LANES, LaneRays, Rays, Vec3x8};
 
 /// What one traced ray did, kept until its sample's colour is summed.
+/// Its children are rays `first_child ..` of the next wave, up to the next
+/// node's `first_child` (each wave's nodes end with one more node, which
+/// only marks the end), the transmitted one first: the order the scalar
+/// ray stack pops them.
 #[derive(Clone, Copy, Debug)]
 pub struct Node {
     /// What the ray added to its sample: `w · (1 − r − t) · local`, or `w · sky`.
-    pub added: Vec3,
-    /// Its children are rays `first_child ..` of the next wave, the
-    /// transmitted one first: the order the scalar ray stack pops them.
+    pub added: [f32; 3],
     pub first_child: u32,
-    pub children: u8,
-    pub kind: RayKind,
-    /// Whether it cast a shadow ray.
-    pub shadow: bool,
+}
+
+impl Node {
+    /// The rays this node's ray sent on, as indices into the next wave.
+    pub fn children(nodes: &[Node], index: usize) -> std::ops::Range<usize> {
+        nodes[index].first_child as usize..nodes[index + 1].first_child as usize
+    }
 }
 
 /// The fixed part of a render: the scene in lanes, the light, the limits.
@@ -38,6 +47,8 @@ pub struct Setup {
     pub features: Features,
     pub max_depth: u32,
     pub epsilon: f32,
+    /// Whether each sample's rays and depth are kept, for the heat maps.
+    pub maps: bool,
 }
 
 /// What eight rays' shading computed: the light they add, and the rays
@@ -127,9 +138,17 @@ pub struct Waves {
     pub rays: Vec<Rays>,
     /// `nodes[d][i]`: what ray `i` of `rays[d]` did.
     pub nodes: Vec<Vec<Node>>,
-    /// Per sample: rays traced so far, shadow rays included; kept only
-    /// when a tree can reach the budget at all (see [`budget_matters`]).
+    /// `cast_shadow[d][i]`: whether ray `i` of `rays[d]` cast a shadow ray;
+    /// kept only when a tree can reach the budget (to count its rays again).
+    pub cast_shadow: Vec<Vec<bool>>,
+    /// Per sample: rays traced so far, shadow rays included; kept for the
+    /// heat maps, and when a tree can reach the budget at all (see
+    /// [`budget_matters`]).
     pub sample_rays: Vec<u32>,
+    /// Per sample: the depth of its deepest ray; kept for the heat maps.
+    pub sample_deepest: Vec<u8>,
+    /// Whether a tree can reach the budget in this render.
+    counting: bool,
     /// The row's rays by kind, counted a group at a time.
     pub counts: RayCounts,
 }
@@ -144,19 +163,31 @@ pub fn budget_matters(max_depth: u32) -> bool {
 
 impl Waves {
     /// Start a row: `samples` samples, none traced yet.
-    pub fn start(&mut self, samples: usize, max_depth: u32) {
-        let depths = max_depth as usize;
+    pub fn start(&mut self, samples: usize, setup: &Setup) {
+        let depths = setup.max_depth as usize;
         if self.rays.len() < depths {
             self.rays.resize_with(depths, Rays::default);
             self.nodes.resize_with(depths, Vec::new);
+            self.cast_shadow.resize_with(depths, Vec::new);
         }
-        for (rays, nodes) in self.rays.iter_mut().zip(&mut self.nodes) {
+        for ((rays, nodes), shadows) in self
+            .rays
+            .iter_mut()
+            .zip(&mut self.nodes)
+            .zip(&mut self.cast_shadow)
+        {
             rays.clear();
             nodes.clear();
+            shadows.clear();
         }
+        self.counting = budget_matters(setup.max_depth);
         self.sample_rays.clear();
-        if budget_matters(max_depth) {
+        if self.counting || setup.maps {
             self.sample_rays.resize(samples, 0);
+        }
+        self.sample_deepest.clear();
+        if setup.maps {
+            self.sample_deepest.resize(samples, 0);
         }
         self.counts = RayCounts::default();
     }
@@ -165,9 +196,7 @@ impl Waves {
     /// tracer cuts such a tree short at a point that depends on its
     /// depth-first order, so these samples are traced again by it.
     pub fn over_budget(&self, sample: usize) -> bool {
-        self.sample_rays
-            .get(sample)
-            .is_some_and(|&rays| rays >= RAY_BUDGET)
+        self.counting && self.sample_rays[sample] >= RAY_BUDGET
     }
 
     // ANCHOR: waves
@@ -185,8 +214,6 @@ impl Waves {
 
     /// Trace the wave of rays at `depth`, and pack the rays they send on
     /// densely into the next wave.
-    // One lane number indexes the wave, the light and the masks at once.
-    #[allow(clippy::needless_range_loop)]
     fn trace_wave(&mut self, setup: &Setup, depth: usize) {
         let can_send = depth < setup.max_depth as usize;
         let (this, rest) = self.rays.split_at_mut(depth);
@@ -195,89 +222,171 @@ impl Waves {
         let next = rest.first_mut().unwrap_or(&mut empty);
         let nodes = &mut self.nodes[depth - 1];
         rays.pad();
-        next.reserve(2 * rays.len());
-        let counting = !self.sample_rays.is_empty();
+        if can_send {
+            next.make_room(2 * rays.len());
+        }
+        nodes.reserve(rays.len() + 1);
+        let mut per_sample = PerSample {
+            rays: &mut self.sample_rays,
+            deepest: &mut self.sample_deepest,
+            cast_shadow: self.counting.then(|| &mut self.cast_shadow[depth - 1]),
+            depth: depth as u8,
+        };
         let mut shadows = 0;
         for group in 0..rays.groups() {
             let shaded = shade_group(setup, rays, group, can_send);
             let lanes = (rays.len() - group * LANES).min(LANES);
-            // The masks as bits, and the light as plain arrays: one lane at
-            // a time from here on.
+            let samples = &rays.sample[group * LANES..group * LANES + lanes];
+            // The masks as bits, lane `k` in bit `k`; padding lanes cleared.
             let real = (1 << lanes) - 1;
-            let hit = shaded.hit.move_mask() & real;
-            let sends = (shaded.reflects | shaded.transmits).move_mask() & real;
-            let bits = Bits {
-                reflects: shaded.reflects.move_mask(),
-                transmits: shaded.transmits.move_mask(),
-                total: shaded.transmitted.map_or(0, |t| t.2.move_mask()),
+            let cast_shadow = if setup.features.shadows {
+                shaded.hit.move_mask() & real
+            } else {
+                0
             };
-            if setup.features.shadows {
-                shadows += hit.count_ones();
+            shadows += cast_shadow.count_ones();
+            let mut sends = Sends {
+                reflects: shaded.reflects.move_mask() & real,
+                transmits: shaded.transmits.move_mask() & real,
+            };
+            if !can_send {
+                sends = Sends::NONE;
             }
-            let added = [shaded.added.x, shaded.added.y, shaded.added.z].map(|c| c.to_array());
-            for lane in 0..lanes {
-                let i = group * LANES + lane;
-                let sample = rays.sample[i];
-                let shadow = setup.features.shadows && hit & (1 << lane) != 0;
-                let mut node = Node {
-                    added: Vec3::new(added[0][lane], added[1][lane], added[2][lane]),
-                    first_child: next.len() as u32,
-                    children: 0,
-                    kind: rays.kind[i],
-                    shadow,
+            if !per_sample.rays.is_empty() {
+                per_sample.count(samples, cast_shadow, &mut sends);
+            }
+            // The group's eight nodes at once: each lane's light, and where
+            // its children will start (after the earlier lanes' children).
+            let [x, y, z] = [shaded.added.x, shaded.added.y, shaded.added.z].map(|c| c.to_array());
+            let mut first_child = next.len() as u32;
+            let group_nodes: [Node; LANES] = std::array::from_fn(|lane| {
+                let node = Node {
+                    added: [x[lane], y[lane], z[lane]],
+                    first_child,
                 };
-                let mut within_budget = true;
-                if counting {
-                    let counted = &mut self.sample_rays[sample as usize];
-                    *counted += 1 + u32::from(shadow);
-                    within_budget = *counted < RAY_BUDGET;
-                }
-                if can_send && sends & (1 << lane) != 0 && within_budget {
-                    node.children = pack_children(&shaded, &bits, lane, sample, next);
-                }
-                nodes.push(node);
+                first_child += sends.children(lane);
+                node
+            });
+            // All eight copied (a copy of known size, inlined), then the
+            // padding lanes' dropped: cheaper than a copy of `lanes`.
+            let before = nodes.len();
+            nodes.extend_from_slice(&group_nodes);
+            nodes.truncate(before + lanes);
+            if sends.any() {
+                pack_children(&shaded, &sends, samples, next, &mut self.counts);
             }
         }
+        nodes.push(Node {
+            added: [0.0; 3],
+            first_child: next.len() as u32,
+        });
         self.counts.0[RayKind::Shadow.index()] += u64::from(shadows);
-        for kind in &rays.kind[..rays.len()] {
-            self.counts.0[kind.index()] += 1;
+    }
+}
+
+/// Where a wave counts its rays into their samples.
+struct PerSample<'a> {
+    rays: &'a mut [u32],
+    /// Empty when the heat maps are not drawn.
+    deepest: &'a mut [u8],
+    /// Kept only when a tree can reach the budget.
+    cast_shadow: Option<&'a mut Vec<bool>>,
+    depth: u8,
+}
+
+impl PerSample<'_> {
+    /// Count one group's rays into their samples (for the heat maps and
+    /// the budget), and stop the trees that reached the budget.
+    fn count(&mut self, samples: &[u32], cast_shadow: i32, sends: &mut Sends) {
+        for (lane, &sample) in samples.iter().enumerate() {
+            let sample = sample as usize;
+            let shadow = cast_shadow & (1 << lane) != 0;
+            let counted = &mut self.rays[sample];
+            *counted += 1 + u32::from(shadow);
+            if let Some(deepest) = self.deepest.get_mut(sample) {
+                *deepest = self.depth;
+            }
+            if let Some(cast_shadow) = &mut self.cast_shadow {
+                if *counted >= RAY_BUDGET {
+                    sends.reflects &= !(1 << lane);
+                    sends.transmits &= !(1 << lane);
+                }
+                cast_shadow.push(shadow);
+            }
         }
     }
 }
 
 // ANCHOR: pack
-/// A group's masks as bits, lane `k` in bit `k`.
-struct Bits {
+/// Which lanes of a group send on a reflected and a transmitted ray, lane
+/// `k` in bit `k`.
+struct Sends {
     reflects: i32,
     transmits: i32,
-    total: i32,
 }
 
-/// Append lane `lane`'s transmitted and reflected rays to the next wave,
-/// in the order the scalar ray stack pops them; returns how many.
-fn pack_children(shaded: &Shaded, bits: &Bits, lane: usize, sample: u32, next: &mut Rays) -> u8 {
-    let set = |mask: i32| mask & (1 << lane) != 0;
-    let mut children = 0;
-    if let Some((from, direction, _)) = &shaded.transmitted
-        && set(bits.transmits)
-    {
-        let kind = if set(bits.total) {
-            RayKind::TotalInternalReflection
-        } else {
-            RayKind::Refraction
-        };
-        let weight = shaded.transmission.as_array_ref()[lane];
-        next.push(from.lane(lane), direction.lane(lane), weight, sample, kind);
-        children += 1;
+impl Sends {
+    const NONE: Sends = Sends {
+        reflects: 0,
+        transmits: 0,
+    };
+
+    fn any(&self) -> bool {
+        self.reflects | self.transmits != 0
     }
-    if let Some((from, direction)) = &shaded.reflected
-        && set(bits.reflects)
-    {
-        let weight = shaded.reflection.as_array_ref()[lane];
-        let kind = RayKind::Reflection;
-        next.push(from.lane(lane), direction.lane(lane), weight, sample, kind);
-        children += 1;
+
+    /// How many rays lane `lane` sends on: 0, 1 or 2.
+    fn children(&self, lane: usize) -> u32 {
+        ((self.reflects >> lane) & 1) as u32 + ((self.transmits >> lane) & 1) as u32
     }
-    children
+}
+
+/// Append the group's transmitted and reflected rays to the next wave,
+/// lane by lane and within a lane in the order the scalar ray stack pops
+/// them (transmitted first), and count them by kind: every ray sent on is
+/// traced. The registers are read out once per group.
+fn pack_children(
+    shaded: &Shaded,
+    sends: &Sends,
+    samples: &[u32],
+    next: &mut Rays,
+    counts: &mut RayCounts,
+) {
+    // Mask: where the light cannot leave the glass, the "transmitted" ray
+    // is the mirror one, and counted as such.
+    let total = shaded.transmitted.map_or(0, |t| t.2.move_mask());
+    let mut count = |kind: RayKind, lanes: i32| {
+        counts.0[kind.index()] += u64::from(lanes.count_ones());
+    };
+    count(RayKind::Reflection, sends.reflects);
+    count(RayKind::Refraction, sends.transmits & !total);
+    count(RayKind::TotalInternalReflection, sends.transmits & total);
+    let transmitted = shaded
+        .transmitted
+        .map(|(from, direction, _)| LaneRays::new(from, direction, shaded.transmission));
+    let reflected = shaded
+        .reflected
+        .map(|(from, direction)| LaneRays::new(from, direction, shaded.reflection));
+    let mut lanes = sends.reflects | sends.transmits;
+    while lanes != 0 {
+        let lane = lanes.trailing_zeros() as usize;
+        lanes &= lanes - 1;
+        let sample = samples[lane];
+        if let Some(rays) = &transmitted
+            && sends.transmits & (1 << lane) != 0
+        {
+            let kind = if total & (1 << lane) != 0 {
+                RayKind::TotalInternalReflection
+            } else {
+                RayKind::Refraction
+            };
+            next.push_lane(rays, lane, sample, kind);
+        }
+        if let Some(rays) = &reflected
+            && sends.reflects & (1 << lane) != 0
+        {
+            next.push_lane(rays, lane, sample, RayKind::Reflection);
+        }
+    }
 }
 // ANCHOR_END: pack

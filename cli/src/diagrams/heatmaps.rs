@@ -2,7 +2,7 @@
 
 use image::RgbImage;
 
-use raylab::render::Rendered;
+use raylab::render::{PixelMaps, Rendered};
 use raylab_plot::{Colormap, ColourScale, HeatmapFigure};
 
 /// A short description of the settings, for captions.
@@ -10,11 +10,12 @@ pub fn settings_caption(binary: &str, rendered: &Rendered) -> String {
     format!("{binary}, {}.", rendered.settings)
 }
 
-/// For each pixel, the depth of the deepest ray its tree reached.
-pub fn depth_figure(binary: &str, rendered: &Rendered) -> RgbImage {
+/// For each pixel, the depth of the deepest ray its tree reached, from a
+/// render that kept its maps.
+pub fn depth_figure(binary: &str, rendered: &Rendered, maps: &PixelMaps) -> RgbImage {
     let max_depth = rendered.settings.max_depth;
-    let values: Vec<f32> = rendered.deepest.iter().map(|&d| f32::from(d)).collect();
-    let deepest = rendered.deepest.iter().copied().max().unwrap_or(1);
+    let values: Vec<f32> = maps.deepest.iter().map(|&d| f32::from(d)).collect();
+    let deepest = maps.deepest.iter().copied().max().unwrap_or(1);
     let mut caption = settings_caption(binary, rendered);
     if deepest <= 1 {
         caption.push_str(
@@ -42,10 +43,10 @@ pub fn depth_figure(binary: &str, rendered: &Rendered) -> RgbImage {
 }
 
 /// For each pixel, every ray traced for it, shadow rays included.
-pub fn rays_figure(binary: &str, rendered: &Rendered) -> RgbImage {
-    let values: Vec<f32> = rendered.rays.iter().map(|&n| n as f32).collect();
-    let most = rendered.rays.iter().copied().max().unwrap_or(1).max(1);
-    let least = rendered.rays.iter().copied().min().unwrap_or(1).max(1);
+pub fn rays_figure(binary: &str, rendered: &Rendered, maps: &PixelMaps) -> RgbImage {
+    let values: Vec<f32> = maps.rays.iter().map(|&n| n as f32).collect();
+    let most = maps.rays.iter().copied().max().unwrap_or(1).max(1);
+    let least = maps.rays.iter().copied().min().unwrap_or(1).max(1);
     let mut caption = settings_caption(binary, rendered);
     if most == least {
         caption.push_str(&format!(
