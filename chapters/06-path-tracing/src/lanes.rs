@@ -62,11 +62,6 @@ impl<'s> SceneLanes<'s> {
         SceneLanes { scene, groups }
     }
 
-    /// The scene the lanes were made from.
-    pub fn scene(&self) -> &'s Scene {
-        self.scene
-    }
-
     // ANCHOR: group
     /// Where the ray meets each sphere of a group (its nearest `t > 0`),
     /// and a mask of the lanes whose sphere it meets at all.
