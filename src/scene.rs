@@ -217,9 +217,10 @@ impl Scene {
     }
 
     /// Everything about a hit that the shading needs, computed once for
-    /// the nearest hit rather than for every candidate.
+    /// the nearest hit rather than for every candidate. Public for the
+    /// queries that find `t` their own way (chapter 6's SIMD lanes).
     #[inline]
-    fn hit_record(&self, ray: &Ray, t: f32, object: Object) -> Hit {
+    pub fn hit_record(&self, ray: &Ray, t: f32, object: Object) -> Hit {
         let point = ray.at(t);
         let (normal, material) = match object {
             Object::Ground => {

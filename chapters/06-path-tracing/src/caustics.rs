@@ -271,7 +271,7 @@ fn photon(
     // `bounces`: the mirror and glass bounces before this hit.
     for bounces in 0..tracer.max_depth {
         *rays += 1;
-        let hit = scene.nearest_hit(&ray)?;
+        let hit = tracer.scene_lanes.nearest_hit(&ray)?;
         // The beam is for this sphere: light that meets something else
         // first is some other sphere's beam, or plain direct light.
         if bounces == 0 && hit.object != Object::Sphere(index) {

@@ -14,6 +14,7 @@ use raylab::scene::Object;
 use raylab::{Hit, Ray, Scene, Vec3};
 
 use crate::caustics::CausticMap;
+use crate::lanes::SceneLanes;
 use crate::random::Random;
 use crate::sun::Sunlight;
 
@@ -113,6 +114,8 @@ pub enum Lobe {
 #[derive(Clone, Copy)]
 pub struct PathTracer<'s> {
     pub scene: &'s Scene,
+    /// The same scene's spheres in SIMD lanes, for the hit queries.
+    pub scene_lanes: &'s SceneLanes<'s>,
     pub sun: Sunlight,
     pub materials: Materials,
     /// The most surface hits on a path, the first one included.
@@ -180,12 +183,12 @@ impl PathTracer<'_> {
             *rays += 1;
             // One hit more than the depth allows: only whether it escapes matters.
             let hit = if hits > self.max_depth {
-                if self.scene.any_hit(&ray) {
+                if self.scene_lanes.any_hit(&ray) {
                     break;
                 }
                 None
             } else {
-                self.scene.nearest_hit(&ray)
+                self.scene_lanes.nearest_hit(&ray)
             };
             let Some(hit) = hit else {
                 // Escaped: the sky's light, and the sun's disc if the path
@@ -219,7 +222,7 @@ impl PathTracer<'_> {
                     if cos > 0.0 {
                         *rays += 1;
                         let shadow = Ray::new(hit.point + to_sun * self.epsilon, to_sun);
-                        if !self.scene.any_hit(&shadow) {
+                        if !self.scene_lanes.any_hit(&shadow) {
                             let light = albedo * FRAC_1_PI * self.sun.irradiance * cos;
                             terms.add_sun(diffuse_bounces + 1, throughput * light);
                         }
@@ -317,8 +320,10 @@ mod tests {
     #[test]
     fn each_lobe_is_chosen_as_often_as_its_share() {
         let scene = Scene::lab();
+        let lanes = SceneLanes::new(&scene);
         let tracer = PathTracer {
             scene: &scene,
+            scene_lanes: &lanes,
             sun: Sunlight::new(&scene.sun, None),
             materials: Materials::Lab,
             max_depth: 10,

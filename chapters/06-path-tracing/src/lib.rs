@@ -17,6 +17,7 @@
 pub mod caustics;
 pub mod exr;
 pub mod integrator;
+pub mod lanes;
 pub mod random;
 pub mod render;
 pub mod run;

@@ -13,6 +13,7 @@ use raylab::{Camera, Scene, Vec3};
 
 use crate::caustics::{CausticMap, KERNEL_RADIUS};
 use crate::integrator::{Materials, PathTracer, Terms};
+use crate::lanes::SceneLanes;
 use crate::random::Random;
 use crate::sun::Sunlight;
 use raylab::sampling::{PixelHash, Sampling, Stream};
@@ -143,8 +144,10 @@ pub fn render(
     settings: &PathSettings,
     progress: &ProgressBar,
 ) -> PathRender {
+    let scene_lanes = SceneLanes::new(scene);
     let mut tracer = PathTracer {
         scene,
+        scene_lanes: &scene_lanes,
         sun: Sunlight::new(&scene.sun, settings.sun_size),
         materials: settings.materials,
         max_depth: settings.max_depth,

@@ -1,5 +1,6 @@
 //! Chapter 6 against what is known: closed forms, a furnace, itself.
 
+use ch06_path_tracing::lanes::SceneLanes;
 use ch06_path_tracing::random::Random;
 use ch06_path_tracing::sun::Sunlight;
 use ch06_path_tracing::{Materials, PathRender, PathSettings, PathTracer, Terms, render};
@@ -83,8 +84,10 @@ fn an_open_unshadowed_ground_point_at_max_depth_1_converges_to_albedo_over_pi_ti
     let point = Vec3::new(-20.5, 0.0, 19.5);
     let albedo = scene.ground.checker.albedo_at(point);
     assert_eq!(albedo, Vec3::splat(0.75));
+    let lanes = SceneLanes::new(&scene);
     let tracer = PathTracer {
         scene: &scene,
+        scene_lanes: &lanes,
         sun: Sunlight::new(&scene.sun, None),
         materials: Materials::Lab,
         max_depth: 1,
