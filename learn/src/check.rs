@@ -99,7 +99,7 @@ fn check_steps(lab: &Lab, exercise: &Exercise, limits: Limits, out: &mut dyn Wri
         );
         return Verdict::NoExercise;
     }
-    let _ = writeln!(out, "{exercise}, {name}/src/lib.rs:");
+    let _ = writeln!(out, "{exercise}, {name}/{}:", exercise.step);
 
     let built = match build(lab, exercise, out) {
         Ok(built) => built,
@@ -255,6 +255,7 @@ fn render_and_compare(
     let mut command = std::process::Command::new(program);
     command
         .args(size_flags())
+        .args(exercise.flags)
         .arg("--no-diagrams")
         .arg(format!("--out={}", scratch.display()))
         .env("RUST_BACKTRACE", "0");
@@ -391,8 +392,27 @@ pub fn reference_image(number: u8) -> RgbImage {
         2 => small_render(&ch02_shadows::CHAPTER),
         3 => small_render(&ch03_reflection::CHAPTER),
         4 => small_render(&ch04_refraction::CHAPTER),
-        _ => small_render(&ch05_antialiasing::CHAPTER),
+        5 => small_render(&ch05_antialiasing::CHAPTER),
+        _ => small_path_traced(),
     }
+}
+
+/// Chapter 6's reference at the check's size and flags.
+fn small_path_traced() -> RgbImage {
+    use ch06_path_tracing::run;
+    let mut args = vec![run::PROGRAM.binary.to_owned()];
+    args.extend(size_flags());
+    let flags = crate::exercise::exercise(6).map_or(&[][..], |e| e.flags);
+    args.extend(flags.iter().map(|f| (*f).to_owned()));
+    let (options, chapter_flags) = run::parse(args).expect("the check's flags parse");
+    let settings = run::settings(&options, &chapter_flags).expect("the check's size is allowed");
+    let rendered = ch06_path_tracing::render(
+        &Scene::lab(),
+        &Camera::lab(),
+        &settings,
+        &ProgressBar::hidden(),
+    );
+    rendered.image.to_srgb8()
 }
 
 fn small_render<S: Step>(chapter: &Chapter<S>) -> RgbImage {

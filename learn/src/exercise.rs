@@ -29,17 +29,24 @@ pub struct Exercise {
     pub package: &'static str,
     /// The book's page for it, from the workspace's root.
     pub page: &'static str,
+    /// The file of the chapter's crate that holds the step, from its folder.
+    pub step: &'static str,
+    /// Flags the check renders with besides its size (chapter 6: fewer
+    /// paths, so that the learner's debug build renders in seconds).
+    pub flags: &'static [&'static str],
     /// What to do, in a few lines, for `learn hint`.
     pub hint: &'static str,
 }
 
 /// Every exercise, in the book's order.
-pub const EXERCISES: [Exercise; 5] = [
+pub const EXERCISES: [Exercise; 6] = [
     Exercise {
         number: 1,
         dir: "chapters/01-ray-cast",
         package: "ch01-ray-cast",
         page: "book/src/ch01-ray-casting.md",
+        step: "src/lib.rs",
+        flags: &[],
         hint: "`hit.facing_normal.dot(sun.direction)` is cos θ; clamp it at 0 so that a \
                surface facing away gets no sun. The irradiance is k · brightness · cos θ; a \
                Lambertian surface sends albedo / π of it back (std::f32::consts::PI), and the \
@@ -50,6 +57,8 @@ pub const EXERCISES: [Exercise; 5] = [
         dir: "chapters/02-shadows",
         package: "ch02-shadows",
         page: "book/src/ch02-shadows.md",
+        step: "src/lib.rs",
+        flags: &[],
         hint: "The feeler's direction is `surface.scene().sun.direction`, and \
                `surface.trace_shadow_ray(ray)` says whether anything blocks it. Do not start it \
                at `hit.point` itself: rounding puts half of those starts just inside the surface, \
@@ -61,6 +70,8 @@ pub const EXERCISES: [Exercise; 5] = [
         dir: "chapters/03-reflection",
         package: "ch03-reflection",
         page: "book/src/ch03-reflection.md",
+        step: "src/lib.rs",
+        flags: &[],
         hint: "`hit.material.reflection()` is r. `raylab::optics::reflect(d, n)` mirrors the \
                ray's direction about `hit.facing_normal`; normalise it, start the new ray \
                `surface.epsilon()` along it, and hand it to \
@@ -71,6 +82,8 @@ pub const EXERCISES: [Exercise; 5] = [
         dir: "chapters/04-refraction",
         package: "ch04-refraction",
         page: "book/src/ch04-refraction.md",
+        step: "src/lib.rs",
+        flags: &[],
         hint: "`hit.material.transmission()` is t and `hit.material.ior()` the index. Going in \
                (`hit.entering`) eta is 1/ior, coming out it is ior. \
                `raylab::optics::refract(d, hit.facing_normal, eta)` gives `None` past the \
@@ -83,7 +96,24 @@ pub const EXERCISES: [Exercise; 5] = [
         dir: "chapters/05-antialiasing",
         package: "ch05-antialiasing",
         page: "book/src/ch05-antialiasing.md",
+        step: "src/lib.rs",
+        flags: &[],
         hint: "Offsets are measured from the pixel's top-left corner, with the pixel 1 wide and                1 high, x to the right and y down. The centre is (0.5, 0.5); each quarter is                0.5 wide, so its middle is 0.25 in from its sides: x and y are each 0.25 or                0.75. The order matters to the last bit of the sum: top left, top right, bottom                left, bottom right. The core averages the five colours in linear light for you.",
+    },
+    Exercise {
+        number: 6,
+        dir: "chapters/06-path-tracing",
+        package: "ch06-path-tracing",
+        page: "book/src/ch06-path-tracing.md",
+        step: "src/integrator.rs",
+        flags: &["--spp=16"],
+        hint: "A surface that neither reflects nor transmits (r + t = 0) is diffuse, whatever u \
+               is. Otherwise the shares are (mirror, refraction) = (r, t), or, with \
+               `Materials::Fresnel` on a material that transmits, (s·F, s·(1 − F)) with s = r + t \
+               and F = `fresnel(d.dot(hit.facing_normal), eta(hit))`. Then cut [0, 1) in that \
+               order: u below the mirror's share is the mirror, below mirror + refraction the \
+               refraction, the rest diffuse. The order matters: the check compares your image with \
+               the reference made from the same random numbers.",
     },
 ];
 
@@ -251,7 +281,7 @@ pub fn double(x: u32) -> u32 {
     fn every_chapter_marks_exactly_one_step_to_write() {
         let root = concat!(env!("CARGO_MANIFEST_DIR"), "/..");
         for exercise in EXERCISES {
-            let path = format!("{root}/{}/src/lib.rs", exercise.dir);
+            let path = format!("{root}/{}/{}", exercise.dir, exercise.step);
             let source = std::fs::read_to_string(&path).unwrap();
             let blanked = blank(&source).unwrap_or_else(|e| panic!("{path}: {e}"));
             assert_eq!(blanked.tasks.len(), 1, "{path}");

@@ -76,7 +76,7 @@ impl Lab {
 
     /// The chapter's own source, the reference solution.
     pub fn reference_source(&self, exercise: &Exercise) -> PathBuf {
-        self.root.join(exercise.dir).join("src/lib.rs")
+        self.root.join(exercise.dir).join(exercise.step)
     }
 
     /// The files of an exercise, as `start` writes them: with the step
@@ -87,28 +87,44 @@ impl Lab {
         solved: bool,
     ) -> Result<Vec<(PathBuf, String)>, LabError> {
         let chapter = self.root.join(exercise.dir);
-        let lib_path = chapter.join("src/lib.rs");
-        let lib = read(&lib_path)?;
-        let blanked = blank(&lib).map_err(|source| LabError::Marker {
-            path: lib_path.clone(),
+        let step_path = chapter.join(exercise.step);
+        let blanked = blank(&read(&step_path)?).map_err(|source| LabError::Marker {
+            path: step_path.clone(),
             source,
         })?;
-        let lib = if solved {
+        let step = if solved {
             blanked.solution
         } else {
             blanked.exercise
         };
-        let main = read(&chapter.join("src/main.rs"))?;
         let manifest = self.manifest(exercise)?;
         let lock = read(&self.root.join("Cargo.lock"))?;
-        Ok(vec![
+        let mut files = vec![
             (PathBuf::from("Cargo.toml"), manifest),
             // The workspace's own lock file, so that the exercise builds
             // with exactly the same versions, without the network.
             (PathBuf::from("Cargo.lock"), lock),
-            (PathBuf::from("src/lib.rs"), lib),
-            (PathBuf::from("src/main.rs"), main),
-        ])
+            (PathBuf::from(exercise.step), step),
+        ];
+        // The rest of the chapter's sources as they are (chapter 6's
+        // integrator has its render loop, sun and caustics beside it).
+        let src = chapter.join("src");
+        let mut names: Vec<_> = std::fs::read_dir(&src)
+            .map_err(|source| LabError::Read {
+                path: src.clone(),
+                source,
+            })?
+            .filter_map(|entry| entry.ok().map(|e| e.file_name()))
+            .filter(|name| name.to_string_lossy().ends_with(".rs"))
+            .collect();
+        names.sort();
+        for name in names {
+            let file = PathBuf::from("src").join(&name);
+            if file != Path::new(exercise.step) {
+                files.push((file, read(&src.join(&name))?));
+            }
+        }
+        Ok(files)
     }
 
     /// Lay the exercise into its folder. A file that is already there is

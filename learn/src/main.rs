@@ -91,9 +91,10 @@ fn run(cli: Cli) -> Result<ExitCode, ExitCode> {
             for task in blanked.iter().flat_map(|b| &b.tasks) {
                 let _ = writeln!(
                     out,
-                    "  write `{}` in {}/src/lib.rs: {}",
+                    "  write `{}` in {}/{}: {}",
                     task.name,
                     folder.display(),
+                    exercise.step,
                     task.text
                 );
             }

@@ -221,7 +221,7 @@ fn an_exercise_is_its_chapter_with_only_the_step_blanked() {
         let files = lab.files(exercise, false).unwrap();
         let lib = &files
             .iter()
-            .find(|(p, _)| p == Path::new("src/lib.rs"))
+            .find(|(p, _)| p == Path::new(exercise.step))
             .unwrap()
             .1;
         let chapter = std::fs::read_to_string(lab.reference_source(exercise)).unwrap();
