@@ -319,6 +319,32 @@ mod tests {
         assert!(z.abs() < 4.0, "mean {mean}, z = {z}");
     }
 
+    /// The lab's tracer with lab materials and a point sun.
+    fn lab_tracer<'s>(scene: &'s Scene, lanes: &'s SceneLanes<'s>) -> PathTracer<'s> {
+        PathTracer {
+            scene,
+            scene_lanes: lanes,
+            sun: Sunlight::new(&scene.sun, None),
+            materials: Materials::Lab,
+            max_depth: 10,
+            epsilon: 1e-4,
+            caustics: None,
+        }
+    }
+
+    /// A ray straight down onto the top of the lab's glass (r 0.1, t 0.7).
+    fn glass_hit_head_on() -> Hit {
+        Hit {
+            t: 1.0,
+            point: Vec3::ZERO,
+            normal: Vec3::Y,
+            facing_normal: Vec3::Y,
+            entering: true,
+            object: Object::Sphere(1),
+            material: Material::new(Vec3::ONE, 0.1, 0.7, 1.5).unwrap(),
+        }
+    }
+
     #[test]
     fn the_mirror_takes_the_lowest_numbers_then_the_refraction_then_the_diffuse() {
         // The order is part of the estimator's definition here: the same
@@ -326,25 +352,8 @@ mod tests {
         // an image correct on average has other noise than the reference.
         let scene = Scene::lab();
         let lanes = SceneLanes::new(&scene);
-        let tracer = PathTracer {
-            scene: &scene,
-            scene_lanes: &lanes,
-            sun: Sunlight::new(&scene.sun, None),
-            materials: Materials::Lab,
-            max_depth: 10,
-            epsilon: 1e-4,
-            caustics: None,
-        };
-        let glass = Material::new(Vec3::ONE, 0.1, 0.7, 1.5).unwrap();
-        let hit = Hit {
-            t: 1.0,
-            point: Vec3::ZERO,
-            normal: Vec3::Y,
-            facing_normal: Vec3::Y,
-            entering: true,
-            object: Object::Sphere(1),
-            material: glass,
-        };
+        let tracer = lab_tracer(&scene, &lanes);
+        let hit = glass_hit_head_on();
         let lobe = |u| tracer.choose_lobe(Vec3::NEG_Y, &hit, u);
         // Glass: [0, 0.1) mirror, [0.1, 0.8) refraction, [0.8, 1) diffuse.
         assert_eq!(lobe(0.05), Lobe::Mirror);
@@ -356,25 +365,8 @@ mod tests {
     fn each_lobe_is_chosen_as_often_as_its_share() {
         let scene = Scene::lab();
         let lanes = SceneLanes::new(&scene);
-        let tracer = PathTracer {
-            scene: &scene,
-            scene_lanes: &lanes,
-            sun: Sunlight::new(&scene.sun, None),
-            materials: Materials::Lab,
-            max_depth: 10,
-            epsilon: 1e-4,
-            caustics: None,
-        };
-        let glass = Material::new(Vec3::ONE, 0.1, 0.7, 1.5).unwrap();
-        let hit = Hit {
-            t: 1.0,
-            point: Vec3::ZERO,
-            normal: Vec3::Y,
-            facing_normal: Vec3::Y,
-            entering: true,
-            object: Object::Sphere(1),
-            material: glass,
-        };
+        let tracer = lab_tracer(&scene, &lanes);
+        let hit = glass_hit_head_on();
         let mut counts = [0; 3];
         for i in 0..1000 {
             let lobe = tracer.choose_lobe(Vec3::NEG_Y, &hit, (i as f32 + 0.5) / 1000.0);
