@@ -108,12 +108,15 @@ fn render_pixel<S: Step + ?Sized>(
 }
 // ANCHOR_END: pixel
 
-/// What a row of the image adds to the totals, besides its pixels.
-#[derive(Clone, Copy, Default)]
-struct RowTally {
-    counts: RayCounts,
-    non_finite: usize,
-    over_budget: u64,
+/// What a row of the image adds to the totals, besides its pixels (rows
+/// are summed with `+`; chapter 7's wave renderer keeps the same tally).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RowTally {
+    pub counts: RayCounts,
+    /// Pixels that came out NaN or infinite.
+    pub non_finite: usize,
+    /// Samples whose tree reached the ray budget.
+    pub over_budget: u64,
 }
 
 impl std::ops::Add for RowTally {

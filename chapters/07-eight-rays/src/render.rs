@@ -5,7 +5,7 @@ use std::time::Instant;
 
 use raylab::indicatif::ProgressBar;
 use raylab::linear_image::LinearImage;
-use raylab::render::map_rows;
+use raylab::render::{RowTally, map_rows};
 use raylab::trace::RayCounts;
 use raylab::{Camera, Maps, PixelMaps, RayKind, Rendered, Scene, Settings, Tracer, Vec3};
 use rayon::prelude::*;
@@ -15,14 +15,6 @@ use crate::camera::primary_rays;
 use crate::intersect::SceneX8;
 use crate::shade::Light;
 use crate::wave::{Node, Setup, Waves};
-
-/// What a row adds to the image's totals.
-#[derive(Clone, Copy, Default)]
-struct Tally {
-    counts: RayCounts,
-    non_finite: usize,
-    over_budget: u64,
-}
 
 // ANCHOR: sum
 /// Add up the tree under `nodes[depth][index]` into `colour` in the order
@@ -112,11 +104,7 @@ pub fn render_waves(
                 tally
             },
         )
-        .reduce(Tally::default, |a, b| Tally {
-            counts: a.counts + b.counts,
-            non_finite: a.non_finite + b.non_finite,
-            over_budget: a.over_budget + b.over_budget,
-        });
+        .reduce(RowTally::default, |a, b| a + b);
     Rendered {
         settings: *settings,
         image: LinearImage::from_pixels(settings.width, settings.height, colours),
@@ -144,7 +132,7 @@ fn render_row(
     camera: &Camera,
     settings: &Settings,
     mut row: Row,
-) -> Tally {
+) -> RowTally {
     let spp = settings.sampling.spp() as usize;
     let j = row.j;
     let waves = &mut worker.waves;
@@ -153,9 +141,9 @@ fn render_row(
     waves.counts.0[RayKind::Primary.index()] += waves.rays[0].len() as u64;
     waves.trace(setup);
 
-    let mut tally = Tally {
+    let mut tally = RowTally {
         counts: waves.counts,
-        ..Tally::default()
+        ..RowTally::default()
     };
     for (i, colour) in row.colours.iter_mut().enumerate() {
         let mut sum = Vec3::ZERO;
