@@ -591,8 +591,10 @@ pub fn usage_line(error: &clap::Error) -> String {
     let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
     let first = lines.next().unwrap_or("invalid arguments");
     let first = first.strip_prefix("error: ").unwrap_or(first);
-    match lines.find(|l| l.starts_with("tip:")) {
-        Some(tip) => format!("{first} ({tip})"),
+    // What clap adds below the first line that helps: a tip, or the values
+    // a flag takes (`--materials nope`).
+    match lines.find(|l| l.starts_with("tip:") || l.starts_with("[possible values:")) {
+        Some(hint) => format!("{first} ({})", hint.trim_matches(['[', ']'])),
         None => format!("{first} (see --help)"),
     }
 }

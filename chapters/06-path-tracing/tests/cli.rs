@@ -31,6 +31,9 @@ fn bad_sun_sizes_and_materials_give_one_line_exit_2_and_write_nothing() {
         assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
         assert!(stderr.starts_with("ch06-path-tracing: error: "), "{stderr}");
         assert!(!out.exists(), "{args:?} wrote {}", out.display());
+        if args == ["--materials", "nope"] {
+            assert!(stderr.contains("possible values: lab, fresnel"), "{stderr}");
+        }
     }
 }
 
