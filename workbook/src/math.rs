@@ -262,6 +262,17 @@ mod tests {
     }
 
     #[test]
+    fn a_quad_between_the_five_points_leaves_no_escaped_entity_in_the_page() {
+        // pulldown-latex writes `\ ` (a backslash space) as an escaped
+        // `&amp;nbsp;`, which the page showed as the text "&nbsp;" in chapter
+        // 5's list of points; `\quad` is a real MathML space.
+        let page = to_mathml(r"\\[ (0.5, 0.5),\quad (0.25, 0.25) \\]").unwrap();
+        assert!(!page.contains("nbsp"), "{page}");
+        let text = include_str!("../../book/src/ch05-antialiasing.md");
+        assert!(!text.contains(r",\ ("), "chapter 5 uses \\ ; use \\quad");
+    }
+
+    #[test]
     fn an_unclosed_formula_is_an_error() {
         let error = to_mathml(r"see \\(x here").unwrap_err();
         assert!(matches!(error, FormulaError::Unclosed { .. }), "{error}");
