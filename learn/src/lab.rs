@@ -26,6 +26,12 @@ pub struct Lab {
     pub dir: PathBuf,
     /// The target folder every exercise builds into.
     pub target: PathBuf,
+    /// The exercises' package version. Cargo tells two builds of a package
+    /// apart by its name and version, not by its folder: two labs that
+    /// build into one target folder (the learner's and the author checks
+    /// of `cargo test`) must differ here, or a check in one could find the
+    /// other's build up to date and run it instead of its own.
+    pub version: String,
 }
 
 /// Why the lab could not do what was asked; one line each.
@@ -66,6 +72,7 @@ impl Lab {
             root: root.to_owned(),
             dir: root.join("my-lab"),
             target: root.join("target"),
+            version: "0.1.0".to_owned(),
         }
     }
 
@@ -172,13 +179,14 @@ impl Lab {
         let mut text = format!(
             "# Your exercise for {exercise}, made by `cargo run -p learn -- start {}`.\n\
              # Its own workspace, built against the finished core and earlier chapters.\n\
-             [package]\nname = \"{package}\"\nversion = \"0.1.0\"\nedition = \"2024\"\npublish = false\n\n\
+             [package]\nname = \"{package}\"\nversion = \"{version}\"\nedition = \"2024\"\npublish = false\n\n\
              # Your program is `my-{package}`, so that it never takes the place of the\n\
              # chapter's own `{package}` in the shared target folder.\n\
              [[bin]]\nname = \"my-{package}\"\npath = \"src/main.rs\"\n\n\
              [dependencies]\n",
             exercise.number,
-            package = exercise.package
+            package = exercise.package,
+            version = self.version,
         );
         for (name, spec) in deps {
             let spec = if spec.get("workspace").and_then(|w| w.as_bool()) == Some(true) {

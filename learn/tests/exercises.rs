@@ -3,14 +3,15 @@
 //! solution passes it, and the check says one clear thing about each kind
 //! of broken step.
 //!
-//! Every lab here builds into the target folder the learner's exercises
+//! Every check here builds into the target folder the learner's exercises
 //! use, the workspace's own `target/`: the libraries `cargo test` has just
-//! compiled are used as they are, the core is compiled for the exercises
-//! once (on a fresh clone, by the first of these tests) and each exercise
-//! costs only its own crate. The labs share that folder's program names, so the
-//! checks take turns (`LOCK`), and cargo relinks a learner's program from
-//! its own build the next time they check.
-
+//! compiled are used as they are, and the core is compiled for the
+//! exercises once (on a fresh clone, by the first of these tests). The
+//! checks also share one lab folder, `target/learn-author-checks/`: an
+//! exercise is compiled from scratch once, as its stub, and every later
+//! check of it (the solution, each broken variant) is an incremental build
+//! of the same crate, a few seconds instead of half a minute. Sharing the
+//! folder and the program names, the checks take turns (`LOCK`).
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::Mutex;
@@ -29,7 +30,8 @@ fn root() -> PathBuf {
         .to_owned()
 }
 
-/// A lab in a fresh temporary folder, building into the shared target.
+/// A lab in a fresh temporary folder, building into the shared target:
+/// for the tests that lay exercises out but never build them.
 fn temp_lab() -> (tempfile::TempDir, Lab) {
     let dir = tempfile::tempdir().unwrap();
     let root = root();
@@ -38,6 +40,26 @@ fn temp_lab() -> (tempfile::TempDir, Lab) {
         ..Lab::in_workspace(&root)
     };
     (dir, lab)
+}
+
+/// The one lab every check here builds in (see the top of this file).
+fn author_lab() -> Lab {
+    let root = root();
+    Lab {
+        dir: root.join("target").join("learn-author-checks"),
+        version: "0.1.0-author-checks".to_owned(),
+        ..Lab::in_workspace(&root)
+    }
+}
+
+/// Lay `exercise` into the author lab afresh, as handed out or solved:
+/// whatever an earlier check left in its folder goes first.
+fn lay(lab: &Lab, exercise: &Exercise, solved: bool) {
+    let folder = lab.folder(exercise);
+    if folder.exists() {
+        std::fs::remove_dir_all(&folder).unwrap();
+    }
+    lab.start(exercise, solved).unwrap();
 }
 
 /// Short limits: a step that loops is stopped in seconds, not half a minute.
@@ -55,7 +77,7 @@ fn check_quietly(lab: &Lab, exercise: &Exercise) -> (Verdict, String) {
 /// Chapter `n`'s solution with `from` replaced by `to` in its step.
 fn solution_with(lab: &Lab, n: u8, from: &str, to: &str) -> &'static Exercise {
     let exercise = exercise(n).unwrap();
-    lab.start(exercise, true).unwrap();
+    lay(lab, exercise, true);
     let lib = lab.folder(exercise).join("src/lib.rs");
     let text = std::fs::read_to_string(&lib).unwrap();
     assert!(
@@ -69,11 +91,12 @@ fn solution_with(lab: &Lab, n: u8, from: &str, to: &str) -> &'static Exercise {
 #[test]
 fn every_exercise_fails_its_check_at_its_tests_and_every_solution_passes() {
     let _turn = LOCK.lock().unwrap_or_else(|e| e.into_inner());
-    let (_stubs_dir, stubs) = temp_lab();
-    let (_solutions_dir, solutions) = temp_lab();
+    let lab = author_lab();
+    // Passes recorded by an earlier run must not count for this one.
+    let _ = std::fs::remove_file(lab.progress_path());
     for exercise in &EXERCISES {
-        stubs.start(exercise, false).unwrap();
-        let (verdict, text) = check_quietly(&stubs, exercise);
+        lay(&lab, exercise, false);
+        let (verdict, text) = check_quietly(&lab, exercise);
         assert!(
             matches!(verdict, Verdict::TestsFail { failed, .. } if failed > 0),
             "{exercise}'s exercise must compile and fail its tests, not {verdict:?}:\n{text}"
@@ -81,13 +104,13 @@ fn every_exercise_fails_its_check_at_its_tests_and_every_solution_passes() {
         assert!(text.contains("✓ it compiles"), "{text}");
         assert!(text.contains("not yet implemented"), "{text}");
 
-        solutions.start(exercise, true).unwrap();
-        let (verdict, text) = check_quietly(&solutions, exercise);
+        lay(&lab, exercise, true);
+        let (verdict, text) = check_quietly(&lab, exercise);
         assert_eq!(verdict, Verdict::Passed, "{exercise}'s solution:\n{text}");
         assert!(text.contains("The reference solution is"), "{text}");
     }
     assert_eq!(
-        solutions.progress().passed.len(),
+        lab.progress().passed.len(),
         EXERCISES.len(),
         "every pass is recorded"
     );
@@ -96,7 +119,7 @@ fn every_exercise_fails_its_check_at_its_tests_and_every_solution_passes() {
 #[test]
 fn a_shadow_ray_started_on_the_surface_passes_the_tests_but_not_the_image() {
     let _turn = LOCK.lock().unwrap_or_else(|e| e.into_inner());
-    let (_dir, lab) = temp_lab();
+    let lab = author_lab();
     let exercise = solution_with(
         &lab,
         2,
@@ -119,7 +142,7 @@ fn a_shadow_ray_started_on_the_surface_passes_the_tests_but_not_the_image() {
 #[test]
 fn a_wrong_image_names_its_worst_pixel_and_writes_three_images() {
     let _turn = LOCK.lock().unwrap_or_else(|e| e.into_inner());
-    let (_dir, lab) = temp_lab();
+    let lab = author_lab();
     // Chapter 3's tests look at the reflected ray's direction and weight,
     // not where it starts: a mirror ray started on the mirror passes them,
     // and the image shows it.
@@ -147,7 +170,7 @@ fn a_wrong_image_names_its_worst_pixel_and_writes_three_images() {
 #[test]
 fn a_render_that_makes_nan_is_one_clear_line() {
     let _turn = LOCK.lock().unwrap_or_else(|e| e.into_inner());
-    let (_dir, lab) = temp_lab();
+    let lab = author_lab();
     // The tests look at the feeler rays, not at the factor returned.
     let exercise = solution_with(
         &lab,
@@ -166,7 +189,7 @@ fn a_render_that_makes_nan_is_one_clear_line() {
 #[test]
 fn a_step_that_never_ends_is_stopped_at_the_time_limit() {
     let _turn = LOCK.lock().unwrap_or_else(|e| e.into_inner());
-    let (_dir, lab) = temp_lab();
+    let lab = author_lab();
     let exercise = solution_with(
         &lab,
         1,
@@ -181,7 +204,7 @@ fn a_step_that_never_ends_is_stopped_at_the_time_limit() {
 #[test]
 fn an_exercise_that_does_not_compile_shows_the_compiler_and_keeps_the_file() {
     let _turn = LOCK.lock().unwrap_or_else(|e| e.into_inner());
-    let (_dir, lab) = temp_lab();
+    let lab = author_lab();
     let exercise = solution_with(&lab, 2, "SUN_IN_SHADOW\n", "SUN_IN_SHADOW +\n");
     let lib = lab.folder(exercise).join("src/lib.rs");
     let before = std::fs::read_to_string(&lib).unwrap();
@@ -193,6 +216,31 @@ fn an_exercise_that_does_not_compile_shows_the_compiler_and_keeps_the_file() {
     );
     assert!(text.contains("✗ it does not compile"), "{text}");
     assert_eq!(std::fs::read_to_string(&lib).unwrap(), before);
+}
+
+#[test]
+fn a_check_never_runs_the_build_of_another_lab() {
+    let _turn = LOCK.lock().unwrap_or_else(|e| e.into_inner());
+    // A second lab on the same target folder, as the learner's my-lab/ is
+    // beside the author lab, with its own version (never the learner's own
+    // 0.1.0, so that this test never touches a learner's build either).
+    let (_dir, theirs) = temp_lab();
+    let theirs = Lab {
+        version: "0.1.0-second-lab".to_owned(),
+        ..theirs
+    };
+    let exercise = exercise(1).unwrap();
+    theirs.start(exercise, false).unwrap();
+    // The author lab builds the solution after the second lab's files were
+    // written: the second lab's stub is older than the newest build.
+    let ours = author_lab();
+    lay(&ours, exercise, true);
+    assert_eq!(check_quietly(&ours, exercise).0, Verdict::Passed);
+    let (verdict, text) = check_quietly(&theirs, exercise);
+    assert!(
+        matches!(verdict, Verdict::TestsFail { failed, .. } if failed > 0),
+        "the second lab must check its own stub, not the author lab's solution: {verdict:?}\n{text}"
+    );
 }
 
 #[test]
