@@ -9,6 +9,7 @@ pub mod learn_figures;
 pub mod math;
 pub mod measure;
 pub mod path_tracing;
+pub mod penumbra;
 
 use std::path::{Path, PathBuf};
 use std::time::Duration;

@@ -10,6 +10,7 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
+use ch06_path_tracing::sun::Sunlight;
 use ch06_path_tracing::{PathRender, Terms, run};
 use image::RgbImage;
 use raylab::indicatif::ProgressBar;
@@ -25,6 +26,7 @@ use crate::measure::{
     GroundMasks, ground_masks, lab_shadow_ratio, luminance, mean_over_albedo, mean_variance,
     primary_hits, rmse, shares, signed_difference, symmetric_range,
 };
+use crate::penumbra;
 use crate::{JobError, Size};
 
 /// Paths per pixel of chapter 6's own run (figures 1 and 2).
@@ -567,7 +569,42 @@ fn sun_figure(dir: &Path, suns: &[PathRender]) -> Result<Vec<PathBuf>, JobError>
         &refs,
         3,
     );
-    save_all(dir, &[("penumbrae.png", &figure)], &[])
+    let table = penumbra_table(&Scene::lab(), &camera, w, h);
+    save_all(
+        dir,
+        &[("penumbrae.png", &figure)],
+        &[("penumbrae.md", &table)],
+    )
+}
+
+/// The penumbrae at the far tips of the glass and the mirror ball's
+/// shadows, measured on the ground for each disc of [`SUN_SIZES`], against
+/// the first-order estimate, and in pixels of the figure's images.
+fn penumbra_table(scene: &Scene, camera: &Camera, w: u32, h: u32) -> String {
+    let mut text = format!(
+        "| sun | ball | from the ball | width on the ground | estimate d·D/sin e | pixels at {w}×{h} |\n\
+         |---|---|---:|---:|---:|---:|\n"
+    );
+    for size in SUN_SIZES.iter().flatten() {
+        let sun = Sunlight::new(&scene.sun, Some(*size));
+        for name in ["glass", "mirror"] {
+            let Some(ball) = scene.sphere_named(name).map(|i| &scene.spheres()[i]) else {
+                continue;
+            };
+            let p = penumbra::at_shadow_tip(&sun, ball);
+            let pixels = p
+                .pixels(camera, w, h)
+                .map_or("off the image".to_owned(), |px| format!("{px:.2}"));
+            let _ = writeln!(
+                text,
+                "| {size}° | {name} | {:.2} | {:.4} | {:.4} | {pixels} |",
+                p.distance_to_ball,
+                p.width(),
+                p.estimate(*size, sun.direction),
+            );
+        }
+    }
+    text
 }
 
 // ---------------------------------------------------------------------------
