@@ -14,6 +14,7 @@ See README.md beside this file for the set-up and what each number means.
 import argparse
 import os
 import re
+import resource
 import statistics
 import subprocess
 import sys
@@ -277,13 +278,20 @@ def check(spp, seed):
 # ---------------------------------------------------------------- compare
 
 
+def children_cpu():
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
 def timed_process(command):
-    start = time.perf_counter()
+    """Wall-clock time and processor time (user + sys, every thread) of a
+    whole process, and what it printed."""
+    cpu, start = children_cpu(), time.perf_counter()
     done = subprocess.run(command, capture_output=True, text=True)
-    elapsed = time.perf_counter() - start
+    elapsed, cpu = time.perf_counter() - start, children_cpu() - cpu
     if done.returncode != 0:
         fail(f"{' '.join(map(str, command))} failed: {done.stderr.strip()}")
-    return elapsed, done.stdout
+    return elapsed, cpu, done.stdout
 
 
 def number(pattern, text):
@@ -330,18 +338,23 @@ def compare(rounds, spp, seed):
                "--whole", "--out", tmp / "g"]),
     }
     times = {k: [] for k in variants}
+    cpu = {k: [] for k in variants}
     internal = {k: [] for k in variants}
     rays = {"a": whitted_rays, "d": path_rays, "f": whitted_rays, "g": path_rays}
     for r in range(rounds):
         for key, (_, command) in variants.items():
             if command is None:
                 shader = whitted if key == "a" else path
-                start = time.perf_counter()
+                # process_time counts every thread of this process, and so
+                # llvmpipe's rendering threads.
+                processor, start = time.process_time(), time.perf_counter()
                 shader.frame()
                 times[key].append(time.perf_counter() - start)
+                cpu[key].append(time.process_time() - processor)
                 continue
-            elapsed, stdout = timed_process(command)
+            elapsed, processor, stdout = timed_process(command)
             times[key].append(elapsed)
+            cpu[key].append(processor)
             if key in "bce":
                 # Our programs count their rays and say so.
                 rays[key] = number(r"([\d,]+) rays", stdout)
@@ -356,23 +369,26 @@ def compare(rounds, spp, seed):
     print()
     print(f"{WIDTH}x{HEIGHT}, {rounds} interleaved rounds, medians (2 cores, shared with other builds)")
     print()
-    print("| | what | median ms | rays | Mrays/s | M paths/s | program's own render ms |")
-    print("|---|---|---:|---:|---:|---:|---:|")
+    print("| | what | median ms | processor ms | rays | Mrays/s | M paths/s | program's own render ms |")
+    print("|---|---|---:|---:|---:|---:|---:|---:|")
     for key, (what, _) in variants.items():
         mrays = rays[key] / median[key] / 1e3
         mpaths = f"{paths / median[key] / 1e3:.2f}" if key in "deg" else ""
         own = f"{statistics.median(internal[key]):.0f}" if key in "bce" else ""
-        print(f"| {key} | {what} | {median[key]:.0f} | {rays[key]:,.0f} | {mrays:.1f} | {mpaths} | {own} |")
+        processor = statistics.median(cpu[key]) * 1e3
+        print(f"| {key} | {what} | {median[key]:.0f} | {processor:.0f} | {rays[key]:,.0f} | {mrays:.1f} | {mpaths} | {own} |")
     print()
 
-    def ratio(x, y):
+    def ratio(x, y, of=times):
         # Round by round, then the median: each pair ran seconds apart.
-        return statistics.median(p / q for p, q in zip(times[x], times[y]))
+        return statistics.median(p / q for p, q in zip(of[x], of[y]))
 
-    print(f"whitted shader frame / ch07 process (issue 15 asks >= 3): {ratio('a', 'c'):.2f}x")
+    print(f"whitted shader frame / ch07 process (issue 15 asks >= 3): {ratio('a', 'c'):.2f}x "
+          f"(processor time: {ratio('a', 'c', cpu):.2f}x)")
     print(f"whitted shader whole process / ch07 process: {ratio('f', 'c'):.2f}x")
-    print(f"whitted shader frame / ch05 process: {ratio('a', 'b'):.2f}x")
+    print(f"whitted shader frame / ch05 process: {ratio('a', 'b'):.2f}x (processor time: {ratio('a', 'b', cpu):.2f}x)")
     print(f"ch06 process / path shader frame, time: {ratio('e', 'd'):.2f}x "
+          f"(processor time: {ratio('e', 'd', cpu):.2f}x) "
           f"(ch06 {paths / median['e'] / 1e3:.2f} vs shader {paths / median['d'] / 1e3:.2f} M paths/s, "
           f"{rays['e'] / median['e'] / 1e3:.1f} vs {rays['d'] / median['d'] / 1e3:.1f} Mrays/s)")
     print(f"path shader whole process / ch06 process: {ratio('g', 'e'):.2f}x")
