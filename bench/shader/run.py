@@ -118,6 +118,18 @@ class Shader:
         return np.frombuffer(data, dtype="f4").reshape(self.height, self.width, 4)[::-1]
 
 
+def llvmpipe_threads():
+    """How many rendering threads llvmpipe started in this process (it names
+    them llvmpipe-0, llvmpipe-1, ...): one per core unless LP_NUM_THREADS says."""
+    names = []
+    for task in os.listdir("/proc/self/task"):
+        try:
+            names.append(Path(f"/proc/self/task/{task}/comm").read_text().strip())
+        except OSError:
+            continue
+    return sum(name.startswith("llvmpipe-") for name in names)
+
+
 def to_srgb8(linear):
     """LAB.md's encoding, for the path shader's linear radiance."""
     import numpy as np
@@ -143,9 +155,9 @@ def render(name, frames, spp, seed, out, whole=False, max_depth=10):
     shader.set("seed", seed)
     shader.set("max_depth", max_depth)
     if not whole:
-        print(f"GL_RENDERER: {shader.renderer}")
-        print(f"LP_NUM_THREADS: {os.environ.get('LP_NUM_THREADS', f'unset (llvmpipe uses every core: {os.cpu_count()})')}")
         shader.frame()
+        print(f"GL_RENDERER: {shader.renderer}; cores: {os.cpu_count()}; "
+              f"llvmpipe threads: {llvmpipe_threads()} (LP_NUM_THREADS {os.environ.get('LP_NUM_THREADS', 'unset')})")
     times = []
     for _ in range(1 if whole else frames):
         start = time.perf_counter()
@@ -318,10 +330,10 @@ def compare(rounds, spp, seed):
     path.set("spp", spp)
     path.set("seed", seed)
     path.set("max_depth", 10)
-    print(f"GL_RENDERER: {whitted.renderer}; cores: {os.cpu_count()}; "
-          f"LP_NUM_THREADS: {os.environ.get('LP_NUM_THREADS', 'unset (one thread per core)')}")
     whitted_rays = float(whitted.frame()[..., 3].astype("f8").sum())  # warm-up and count
     path_rays = float(path.frame()[..., 3].astype("f8").sum())
+    print(f"GL_RENDERER: {whitted.renderer}; cores: {os.cpu_count()}; "
+          f"llvmpipe threads: {llvmpipe_threads()} (LP_NUM_THREADS {os.environ.get('LP_NUM_THREADS', 'unset')})")
     tmp = Path(tempfile.mkdtemp(prefix="raylab-shader-"))
     size = ["--width", str(WIDTH), "--height", str(HEIGHT)]
     variants = {
