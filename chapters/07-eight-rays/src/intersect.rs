@@ -184,6 +184,11 @@ impl SceneX8 {
         // where a scalar tracer would index an array.
         for (k, s) in self.spheres.iter().enumerate() {
             let mine = hits.object.cmp_eq(f32x8::splat(k as f32 + 1.0));
+            // Divergence: most groups hit one or two of the objects; the
+            // spheres that no lane hit have nothing to hand over.
+            if mine.none() {
+                continue;
+            }
             centre = Vec3x8::select(mine, s.centre, centre);
             albedo = Vec3x8::select(mine, s.albedo, albedo);
             albedo_over_pi = Vec3x8::select(mine, s.albedo_over_pi, albedo_over_pi);

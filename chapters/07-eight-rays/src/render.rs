@@ -1,5 +1,5 @@
 //! The whole image: one row per task on every core, each row traced in
-//! waves, then each sample's tree summed in the scalar tracer's order.
+//! waves, then each sample's rays summed in the scalar tracer's order.
 
 use std::time::Instant;
 
@@ -11,43 +11,36 @@ use raylab::{Camera, Maps, PixelMaps, RayKind, Rendered, Scene, Settings, Tracer
 use rayon::prelude::*;
 
 use crate::EightRays;
-use crate::camera::primary_rays;
+use crate::camera::PrimaryRays;
 use crate::intersect::SceneX8;
 use crate::shade::Light;
-use crate::wave::{Node, Setup, Waves};
+use crate::wave::{END, Ledger, Setup, Waves};
 
 // ANCHOR: sum
-/// Add up the tree under `nodes[depth][index]` into `colour` in the order
-/// the scalar ray stack pops it: a ray's own light first, then its
-/// children's subtrees.
-#[inline]
-fn sum_tree(nodes: &[Vec<Node>], depth: usize, index: usize, colour: &mut Vec3) {
-    // Most samples' trees are their primary ray alone: no call for those.
-    *colour += Vec3::from_array(nodes[depth][index].added);
-    if !Node::children(&nodes[depth], index).is_empty() {
-        sum_children(nodes, depth, index, colour);
+/// A sample's colour: the light of its rays added up in the order the
+/// scalar ray stack pops them, by following the ledger's links from its
+/// primary ray (whose number is the sample's). Most samples' primary ray
+/// sent nothing on, and the walk ends after one step.
+fn sum_sample(ledger: &Ledger, sample: usize) -> Vec3 {
+    let mut colour = Vec3::ZERO;
+    let mut ray = sample as u32;
+    while ray != END {
+        colour += ledger.light(ray as usize);
+        ray = ledger.next[ray as usize];
     }
-}
-
-/// Add up the subtrees of `nodes[depth][index]`'s children, in order.
-fn sum_children(nodes: &[Vec<Node>], depth: usize, index: usize, colour: &mut Vec3) {
-    for child in Node::children(&nodes[depth], index) {
-        *colour += Vec3::from_array(nodes[depth + 1][child].added);
-        // Most rays send nothing on: those are done without a call.
-        if !Node::children(&nodes[depth + 1], child).is_empty() {
-            sum_children(nodes, depth + 1, child, colour);
-        }
-    }
+    colour
 }
 // ANCHOR_END: sum
 
-/// The rays of a tree by kind, to take a tree's wave-traced part back out
-/// of the counts when the scalar tracer traces that sample again.
-fn count_tree(waves: &Waves, depth: usize, index: usize, counts: &mut RayCounts) {
-    counts.0[waves.rays[depth].kind[index].index()] += 1;
-    counts.0[RayKind::Shadow.index()] += u64::from(waves.cast_shadow[depth][index]);
-    for child in Node::children(&waves.nodes[depth], index) {
-        count_tree(waves, depth + 1, child, counts);
+/// The rays of a sample by kind, to take its wave-traced part back out of
+/// the counts when the scalar tracer traces that sample again.
+fn count_sample(waves: &Waves, sample: usize, counts: &mut RayCounts) {
+    let mut ray = sample as u32;
+    while ray != END {
+        let (kind, cast_shadow) = waves.kinds[ray as usize];
+        counts.0[kind.index()] += 1;
+        counts.0[RayKind::Shadow.index()] += u64::from(cast_shadow);
+        ray = waves.ledger.next[ray as usize];
     }
 }
 
@@ -137,9 +130,7 @@ fn render_row(
     let j = row.j;
     let waves = &mut worker.waves;
     waves.start(settings.width as usize * spp, setup);
-    primary_rays(camera, j, settings, &mut waves.rays[0]);
-    waves.counts.0[RayKind::Primary.index()] += waves.rays[0].len() as u64;
-    waves.trace(setup);
+    waves.trace(setup, &PrimaryRays::new(camera, settings, j));
 
     let mut tally = RowTally {
         counts: waves.counts,
@@ -150,10 +141,9 @@ fn render_row(
         let (mut deepest, mut rays) = (0, 0);
         for k in 0..spp {
             let sample = i * spp + k;
-            let mut traced = Vec3::ZERO;
-            if waves.over_budget(sample) {
+            let traced = if waves.over_budget(sample) {
                 let mut waved = RayCounts::default();
-                count_tree(waves, 0, sample, &mut waved);
+                count_sample(waves, sample, &mut waved);
                 tally.counts = tally.counts - waved;
                 let before = worker.scalar.counts();
                 let offset = settings.sampling.offset((i as u32, j), k as u32);
@@ -161,16 +151,16 @@ fn render_row(
                 let scalar = worker.scalar.trace(ray);
                 tally.counts = tally.counts + (worker.scalar.counts() - before);
                 tally.over_budget += u64::from(scalar.over_budget);
-                traced = scalar.colour;
                 deepest = deepest.max(scalar.deepest as u8);
                 rays += scalar.rays;
+                scalar.colour
             } else {
-                sum_tree(&waves.nodes, 0, sample, &mut traced);
                 if setup.maps {
                     deepest = deepest.max(waves.sample_deepest[sample]);
                     rays += waves.sample_rays[sample];
                 }
-            }
+                sum_sample(&waves.ledger, sample)
+            };
             sum += traced;
         }
         let average = sum / spp as f32;

@@ -123,8 +123,8 @@ impl Sub for Vec3x8 {
 
 // ANCHOR: rays
 /// A wave of rays, one array per number. The arrays are kept longer than
-/// the wave (see [`Rays::make_room`]) and written in place, so that adding
-/// a ray is nine stores, with no check of capacity; the first `len` entries
+/// the wave (see [`Rays::make_room`]) and written in place, eight entries
+/// at a time, with no check of capacity per ray; the first `len` entries
 /// are the real rays, and [`Rays::pad`] fills the last 8-lane group.
 #[derive(Clone, Debug, Default)]
 pub struct Rays {
@@ -139,28 +139,25 @@ pub struct Rays {
     /// Which of the row's samples the ray belongs to.
     pub sample: Vec<u32>,
     pub kind: Vec<RayKind>,
+    /// The ray that the scalar stack pops once this ray's whole subtree is
+    /// done, as a number in the row's ledger ([`crate::wave::Ledger`]), or
+    /// [`crate::wave::END`] where the sample is then finished.
+    pub after: Vec<u32>,
     len: usize,
 }
 // ANCHOR_END: rays
 
-/// Eight rays as plain arrays, lane `k` at index `k`: a group's rays sent
-/// on, read out of their registers once and then copied lane by lane.
+/// Eight rays in registers, as the shading takes them and as a group's
+/// rays sent on are packed into the next wave: with each lane's sample,
+/// kind, and the ray its sample goes on with after this ray's subtree.
 #[derive(Clone, Copy, Debug)]
-pub struct LaneRays {
-    origin: [[f32; LANES]; 3],
-    direction: [[f32; LANES]; 3],
-    weight: [f32; LANES],
-}
-
-impl LaneRays {
-    pub fn new(origin: Vec3x8, direction: Vec3x8, weight: f32x8) -> Self {
-        let array = |v: Vec3x8| [v.x.to_array(), v.y.to_array(), v.z.to_array()];
-        LaneRays {
-            origin: array(origin),
-            direction: array(direction),
-            weight: weight.to_array(),
-        }
-    }
+pub struct Group {
+    pub origin: Vec3x8,
+    pub direction: Vec3x8,
+    pub weight: f32x8,
+    pub sample: [u32; LANES],
+    pub kind: [RayKind; LANES],
+    pub after: [u32; LANES],
 }
 
 impl Rays {
@@ -182,15 +179,16 @@ impl Rays {
     }
 
     /// Make the arrays long enough for `more` rays after the real ones,
-    /// and the padding of the last group after those.
+    /// and a whole 8-lane group written after those.
     pub fn make_room(&mut self, more: usize) {
-        let room = (self.len + more).next_multiple_of(LANES);
+        let room = (self.len + more).next_multiple_of(LANES) + LANES;
         if self.sample.len() < room {
             for numbers in self.numbers_mut() {
                 numbers.resize(room, 0.0);
             }
             self.sample.resize(room, 0);
             self.kind.resize(room, RayKind::Primary);
+            self.after.resize(room, 0);
         }
     }
 
@@ -200,51 +198,56 @@ impl Rays {
         (self.ox[i], self.oy[i], self.oz[i]) = (origin.x, origin.y, origin.z);
         (self.dx[i], self.dy[i], self.dz[i]) = (direction.x, direction.y, direction.z);
         (self.weight[i], self.sample[i], self.kind[i]) = (weight, sample, kind);
+        self.after[i] = crate::wave::END;
         self.len += 1;
     }
 
-    /// Append lane `lane` of eight rays; there must be room for it.
-    // Always inlined: as a call of its own (the compiler's choice), it
-    // was 14 % of a render's time in the profile.
-    #[inline(always)]
-    pub fn push_lane(&mut self, rays: &LaneRays, lane: usize, sample: u32, kind: RayKind) {
-        let (o, d) = (&rays.origin, &rays.direction);
-        let i = self.len;
-        (self.ox[i], self.oy[i], self.oz[i]) = (o[0][lane], o[1][lane], o[2][lane]);
-        (self.dx[i], self.dy[i], self.dz[i]) = (d[0][lane], d[1][lane], d[2][lane]);
-        (self.weight[i], self.sample[i], self.kind[i]) = (rays.weight[lane], sample, kind);
-        self.len += 1;
-    }
-
-    /// Append the first `count` lanes of eight rays of one kind.
-    pub fn push_lanes(
-        &mut self,
-        origins: Vec3x8,
-        directions: Vec3x8,
-        weights: f32x8,
-        samples: &[u32],
-        kind: RayKind,
-    ) {
-        let count = samples.len();
-        // All eight lanes are written (a copy of known size, inlined) and
-        // `len` moves on by `count`: the padding lanes are overwritten next.
-        self.make_room(LANES);
-        let numbers = [
-            origins.x,
-            origins.y,
-            origins.z,
-            directions.x,
-            directions.y,
-            directions.z,
-            weights,
-        ];
-        let at = self.len..self.len + LANES;
-        for (to, from) in self.numbers_mut().into_iter().zip(numbers) {
-            to[at.clone()].copy_from_slice(from.as_array_ref());
+    // ANCHOR: packed
+    /// Append the lanes of `rays` that `mask` selects (lane `k` in bit
+    /// `k`), packed densely in lane order; there must be room for them.
+    pub fn push_packed(&mut self, mask: i32, rays: &Group) {
+        // Every lane at once where all eight are sent on (inside the glass,
+        // most groups): eight entries of each array copied as a block.
+        if mask == 0xff {
+            self.push_all(rays);
+            return;
         }
-        self.sample[self.len..self.len + count].copy_from_slice(samples);
-        self.kind[at].fill(kind);
-        self.len += count;
+        // Otherwise lane by lane: the registers read out once, then one
+        // loop over the selected lanes writes each lane's ten numbers.
+        let (o, d) = (&rays.origin, &rays.direction);
+        let [ox, oy, oz] = [o.x, o.y, o.z].map(f32x8::to_array);
+        let [dx, dy, dz] = [d.x, d.y, d.z].map(f32x8::to_array);
+        let weight = rays.weight.to_array();
+        let mut lanes = mask;
+        while lanes != 0 {
+            let lane = lanes.trailing_zeros() as usize % LANES;
+            lanes &= lanes - 1; // the lowest selected lane is done
+            let i = self.len;
+            (self.ox[i], self.oy[i], self.oz[i]) = (ox[lane], oy[lane], oz[lane]);
+            (self.dx[i], self.dy[i], self.dz[i]) = (dx[lane], dy[lane], dz[lane]);
+            self.weight[i] = weight[lane];
+            (self.sample[i], self.kind[i]) = (rays.sample[lane], rays.kind[lane]);
+            self.after[i] = rays.after[lane];
+            self.len += 1;
+        }
+    }
+    // ANCHOR_END: packed
+
+    /// Append all eight rays of `rays`; there must be room for them.
+    fn push_all(&mut self, rays: &Group) {
+        let at = self.len..self.len + LANES;
+        let (o, d) = (&rays.origin, &rays.direction);
+        self.ox[at.clone()].copy_from_slice(o.x.as_array_ref());
+        self.oy[at.clone()].copy_from_slice(o.y.as_array_ref());
+        self.oz[at.clone()].copy_from_slice(o.z.as_array_ref());
+        self.dx[at.clone()].copy_from_slice(d.x.as_array_ref());
+        self.dy[at.clone()].copy_from_slice(d.y.as_array_ref());
+        self.dz[at.clone()].copy_from_slice(d.z.as_array_ref());
+        self.weight[at.clone()].copy_from_slice(rays.weight.as_array_ref());
+        self.sample[at.clone()].copy_from_slice(&rays.sample);
+        self.kind[at.clone()].copy_from_slice(&rays.kind);
+        self.after[at].copy_from_slice(&rays.after);
+        self.len += LANES;
     }
 
     /// The real rays (without the padding).
@@ -277,10 +280,7 @@ impl Rays {
     }
 
     fn load(numbers: &[f32], group: usize) -> f32x8 {
-        let lanes: [f32; LANES] = numbers[group * LANES..(group + 1) * LANES]
-            .try_into()
-            .expect("waves are padded to whole groups");
-        f32x8::from(lanes)
+        f32x8::from(lanes_of(numbers, group))
     }
 
     pub fn origins(&self, group: usize) -> Vec3x8 {
@@ -302,6 +302,26 @@ impl Rays {
     pub fn weights(&self, group: usize) -> f32x8 {
         Rays::load(&self.weight, group)
     }
+
+    /// Group `group`'s eight rays (the padding lanes' sample, kind and
+    /// link are stale: only the real lanes' are read).
+    pub fn group(&self, group: usize) -> Group {
+        Group {
+            origin: self.origins(group),
+            direction: self.directions(group),
+            weight: self.weights(group),
+            sample: lanes_of(&self.sample, group),
+            kind: lanes_of(&self.kind, group),
+            after: lanes_of(&self.after, group),
+        }
+    }
+}
+
+/// Group `group`'s eight entries of one of the arrays.
+fn lanes_of<T: Copy>(numbers: &[T], group: usize) -> [T; LANES] {
+    numbers[group * LANES..(group + 1) * LANES]
+        .try_into()
+        .expect("waves are padded to whole groups")
 }
 
 #[cfg(test)]
@@ -342,5 +362,28 @@ mod tests {
         rays.pad();
         assert_eq!((rays.len(), rays.groups()), (3, 1));
         assert_eq!(rays.weights(0).to_array(), [0., 1., 2., 2., 2., 2., 2., 2.]);
+    }
+
+    #[test]
+    fn packing_lanes_1_4_and_6_writes_them_first_in_order() {
+        let mut rays = Rays::default();
+        rays.make_room(LANES);
+        let lane_numbers = f32x8::from(std::array::from_fn::<f32, 8, _>(|i| i as f32));
+        let eight = Group {
+            origin: Vec3x8::splat(Vec3::ZERO),
+            direction: Vec3x8::splat(Vec3::X),
+            weight: lane_numbers,
+            sample: std::array::from_fn(|i| 10 + i as u32),
+            kind: [RayKind::Reflection; LANES],
+            after: std::array::from_fn(|i| 20 + i as u32),
+        };
+        rays.push_packed(0b0101_0010, &eight);
+        rays.push_packed(0b1111_1111, &eight);
+        rays.pad();
+        assert_eq!((rays.len(), rays.groups()), (11, 2));
+        assert_eq!(rays.weights(0).to_array(), [1., 4., 6., 0., 1., 2., 3., 4.]);
+        assert_eq!(rays.weights(1).to_array(), [5., 6., 7., 7., 7., 7., 7., 7.]);
+        assert_eq!(&rays.sample[..4], &[11, 14, 16, 10]);
+        assert_eq!(&rays.after[..4], &[21, 24, 26, 20]);
     }
 }

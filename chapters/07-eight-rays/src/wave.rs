@@ -3,41 +3,92 @@
 //! The scalar tracer follows one sample's ray tree to the bottom before it
 //! starts the next sample. Here the row's primary rays are traced first,
 //! all of them (wave 1); their reflected and refracted rays, packed densely,
-//! form wave 2; and so on. Each ray leaves a [`Node`] behind: what it added
-//! to its sample, and where its children are in the next wave. The sample's
-//! colour is then summed by walking its tree in the scalar tracer's order,
-//! so the sums round exactly as chapter 5's do.
+//! form wave 2; and so on. Each ray leaves an entry in the row's [`Ledger`]:
+//! what it added to its sample, and which entry the scalar ray stack would
+//! pop after it. The sample's colour is then summed by following those
+//! links from its primary ray, so the sums round exactly as chapter 5's do.
 //!
-//! Everything a node does not need for that sum is counted a group at a
-//! time (the rays by kind) or per sample (its rays and depth, for the
-//! heat maps), and the latter only when it is asked for.
+//! Everything the sum does not need is counted a group at a time (the rays
+//! by kind) or per sample (its rays and depth, for the heat maps), and the
+//! latter only when it is asked for.
 
-use raylab::RayKind;
 use raylab::trace::{RAY_BUDGET, RayCounts};
+use raylab::{RayKind, Vec3};
 use wide::f32x8;
 
+use crate::camera::PrimaryRays;
 use crate::intersect::{SceneX8, senders};
 use crate::like::Features;
 use crate::shade::{Light, reflect, refract};
-use crate::soa::{LANES, LaneRays, Rays, Vec3x8};
+use crate::soa::{Group, LANES, Rays, Vec3x8};
 
-/// What one traced ray did, kept until its sample's colour is summed.
-/// Its children are rays `first_child ..` of the next wave, up to the next
-/// node's `first_child` (each wave's nodes end with one more node, which
-/// only marks the end), the transmitted one first: the order the scalar
-/// ray stack pops them.
-#[derive(Clone, Copy, Debug)]
-pub struct Node {
-    /// What the ray added to its sample: `w · (1 − r − t) · local`, or `w · sky`.
-    pub added: [f32; 3],
-    pub first_child: u32,
+/// The link of a sample's last ray: after it, the sample is finished.
+pub const END: u32 = u32::MAX;
+
+// ANCHOR: ledger
+/// One entry per ray traced in a row, numbered in the order the waves
+/// trace them (wave 1's rays first, so a primary ray's number is its
+/// sample's): the light the ray added to its sample, `w · (1 − r − t) ·
+/// local` or `w · sky`, and the number of the ray that the scalar ray stack
+/// pops next for the same sample ([`END`] after its last).
+///
+/// A ray that sends rays on links to its first child (the transmitted one,
+/// which the stack pops first); the child links to its sibling, and the
+/// last child to whatever its parent linked to before. The links are made
+/// when the children are packed, so summing a sample is a walk along them.
+#[derive(Clone, Debug, Default)]
+pub struct Ledger {
+    x: Vec<f32>,
+    y: Vec<f32>,
+    z: Vec<f32>,
+    pub next: Vec<u32>,
+}
+// ANCHOR_END: ledger
+
+impl Ledger {
+    pub fn clear(&mut self) {
+        for light in [&mut self.x, &mut self.y, &mut self.z] {
+            light.clear();
+        }
+        self.next.clear();
+    }
+
+    /// How many rays are in the ledger: the number the next one gets.
+    pub fn len(&self) -> usize {
+        self.next.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.next.is_empty()
+    }
+
+    /// What ray `ray` added to its sample.
+    pub fn light(&self, ray: usize) -> Vec3 {
+        Vec3::new(self.x[ray], self.y[ray], self.z[ray])
+    }
+
+    /// Append a group's first `lanes` rays: eight entries written (copies
+    /// of known size), then the padding lanes' dropped.
+    fn push_group(&mut self, light: Vec3x8, next: [u32; LANES], lanes: usize) {
+        let keep = self.len() + lanes;
+        append(&mut self.x, light.x.as_array_ref(), keep);
+        append(&mut self.y, light.y.as_array_ref(), keep);
+        append(&mut self.z, light.z.as_array_ref(), keep);
+        append(&mut self.next, &next, keep);
+    }
+
+    fn reserve(&mut self, more: usize) {
+        for light in [&mut self.x, &mut self.y, &mut self.z] {
+            light.reserve(more + LANES);
+        }
+        self.next.reserve(more + LANES);
+    }
 }
 
-impl Node {
-    /// The rays this node's ray sent on, as indices into the next wave.
-    pub fn children(nodes: &[Node], index: usize) -> std::ops::Range<usize> {
-        nodes[index].first_child as usize..nodes[index + 1].first_child as usize
-    }
+/// Append eight entries to `to`, then cut it back to `keep` entries.
+fn append<T: Copy>(to: &mut Vec<T>, eight: &[T; LANES], keep: usize) {
+    to.extend_from_slice(eight);
+    to.truncate(keep);
 }
 
 /// The fixed part of a render: the scene in lanes, the light, the limits.
@@ -68,9 +119,8 @@ struct Shaded {
 
 // ANCHOR: group
 /// Trace and shade one group of eight rays of a wave.
-fn shade_group(setup: &Setup, rays: &Rays, group: usize, can_send: bool) -> Shaded {
-    let (o, d) = (rays.origins(group), rays.directions(group));
-    let w = rays.weights(group);
+fn shade_group(setup: &Setup, rays: &Group, can_send: bool) -> Shaded {
+    let (o, d, w) = (rays.origin, rays.direction, rays.weight);
     let hits = setup.scene.nearest(o, d);
     let sky = setup.light.sky(d).scale(w);
     let mut shaded = Shaded {
@@ -131,16 +181,16 @@ fn shade_group(setup: &Setup, rays: &Rays, group: usize, can_send: bool) -> Shad
 }
 // ANCHOR_END: group
 
-/// A row's waves and trees, kept by one worker and reused for every row.
+/// A row's waves and ledger, kept by one worker and reused for every row.
 #[derive(Default)]
 pub struct Waves {
     /// `rays[d]`: the rays of depth `d + 1`.
     pub rays: Vec<Rays>,
-    /// `nodes[d][i]`: what ray `i` of `rays[d]` did.
-    pub nodes: Vec<Vec<Node>>,
-    /// `cast_shadow[d][i]`: whether ray `i` of `rays[d]` cast a shadow ray;
+    /// Every traced ray's light and link, numbered wave after wave.
+    pub ledger: Ledger,
+    /// Per ledger entry, the ray's kind and whether it cast a shadow ray;
     /// kept only when a tree can reach the budget (to count its rays again).
-    pub cast_shadow: Vec<Vec<bool>>,
+    pub kinds: Vec<(RayKind, bool)>,
     /// Per sample: rays traced so far, shadow rays included; kept for the
     /// heat maps, and when a tree can reach the budget at all (see
     /// [`budget_matters`]).
@@ -167,19 +217,12 @@ impl Waves {
         let depths = setup.max_depth as usize;
         if self.rays.len() < depths {
             self.rays.resize_with(depths, Rays::default);
-            self.nodes.resize_with(depths, Vec::new);
-            self.cast_shadow.resize_with(depths, Vec::new);
         }
-        for ((rays, nodes), shadows) in self
-            .rays
-            .iter_mut()
-            .zip(&mut self.nodes)
-            .zip(&mut self.cast_shadow)
-        {
+        for rays in &mut self.rays {
             rays.clear();
-            nodes.clear();
-            shadows.clear();
         }
+        self.ledger.clear();
+        self.kinds.clear();
         self.counting = budget_matters(setup.max_depth);
         self.sample_rays.clear();
         if self.counting || setup.maps {
@@ -200,43 +243,57 @@ impl Waves {
     }
 
     // ANCHOR: waves
-    /// Trace every wave of the row, from the primary rays in `rays[0]`
-    /// down to `max_depth` or until a wave is empty.
-    pub fn trace(&mut self, setup: &Setup) {
-        for depth in 1..=setup.max_depth as usize {
+    /// Trace every wave of the row: the primary rays (wave 1, made by the
+    /// camera as they are traced), then the rays they sent on, down to
+    /// `max_depth` or until a wave is empty.
+    pub fn trace(&mut self, setup: &Setup, primary: &PrimaryRays) {
+        self.counts.0[RayKind::Primary.index()] += primary.len() as u64;
+        self.trace_wave(setup, 1, Some(primary));
+        for depth in 2..=setup.max_depth as usize {
             if self.rays[depth - 1].is_empty() {
                 break;
             }
-            self.trace_wave(setup, depth);
+            self.trace_wave(setup, depth, None);
         }
     }
     // ANCHOR_END: waves
 
-    /// Trace the wave of rays at `depth`, and pack the rays they send on
-    /// densely into the next wave.
-    fn trace_wave(&mut self, setup: &Setup, depth: usize) {
+    /// Trace the wave of rays at `depth` (the camera's `primary` rays, or
+    /// those in `rays[depth - 1]`), and pack the rays they send on densely
+    /// into the next wave.
+    fn trace_wave(&mut self, setup: &Setup, depth: usize, primary: Option<&PrimaryRays>) {
         let can_send = depth < setup.max_depth as usize;
         let (this, rest) = self.rays.split_at_mut(depth);
         let rays = &mut this[depth - 1];
         let mut empty = Rays::default();
         let next = rest.first_mut().unwrap_or(&mut empty);
-        let nodes = &mut self.nodes[depth - 1];
-        rays.pad();
+        let len = match primary {
+            Some(primary) => primary.len(),
+            None => {
+                rays.pad();
+                rays.len()
+            }
+        };
+        // The next wave's rays get the ledger's numbers after this wave's.
+        let next_wave_starts = (self.ledger.len() + len) as u32;
         if can_send {
-            next.make_room(2 * rays.len());
+            next.make_room(2 * len);
         }
-        nodes.reserve(rays.len() + 1);
+        self.ledger.reserve(len);
         let mut per_sample = PerSample {
             rays: &mut self.sample_rays,
             deepest: &mut self.sample_deepest,
-            cast_shadow: self.counting.then(|| &mut self.cast_shadow[depth - 1]),
+            kinds: self.counting.then_some(&mut self.kinds),
             depth: depth as u8,
         };
         let mut shadows = 0;
-        for group in 0..rays.groups() {
-            let shaded = shade_group(setup, rays, group, can_send);
-            let lanes = (rays.len() - group * LANES).min(LANES);
-            let samples = &rays.sample[group * LANES..group * LANES + lanes];
+        for group in 0..len.div_ceil(LANES) {
+            let eight = match primary {
+                Some(primary) => primary.group(group),
+                None => rays.group(group),
+            };
+            let shaded = shade_group(setup, &eight, can_send);
+            let lanes = (len - group * LANES).min(LANES);
             // The masks as bits, lane `k` in bit `k`; padding lanes cleared.
             let real = (1 << lanes) - 1;
             let cast_shadow = if setup.features.shadows {
@@ -253,33 +310,25 @@ impl Waves {
                 sends = Sends::NONE;
             }
             if !per_sample.rays.is_empty() {
-                per_sample.count(samples, cast_shadow, &mut sends);
+                per_sample.count(&eight, lanes, cast_shadow, &mut sends);
             }
-            // The group's eight nodes at once: each lane's light, and where
-            // its children will start (after the earlier lanes' children).
-            let [x, y, z] = [shaded.added.x, shaded.added.y, shaded.added.z].map(|c| c.to_array());
-            let mut first_child = next.len() as u32;
-            let group_nodes: [Node; LANES] = std::array::from_fn(|lane| {
-                let node = Node {
-                    added: [x[lane], y[lane], z[lane]],
-                    first_child,
-                };
-                first_child += sends.children(lane);
-                node
-            });
-            // All eight copied (a copy of known size, inlined), then the
-            // padding lanes' dropped: cheaper than a copy of `lanes`.
-            let before = nodes.len();
-            nodes.extend_from_slice(&group_nodes);
-            nodes.truncate(before + lanes);
             if sends.any() {
-                pack_children(&shaded, &sends, samples, next, &mut self.counts);
+                let first = next_wave_starts + next.len() as u32;
+                let links = Links::new(&sends, first, eight.after);
+                self.ledger.push_group(shaded.added, links.next, lanes);
+                pack_children(
+                    &shaded,
+                    &sends,
+                    eight.sample,
+                    &links,
+                    next,
+                    &mut self.counts,
+                );
+            } else {
+                // Nothing sent on: each lane's sample goes on where it would have.
+                self.ledger.push_group(shaded.added, eight.after, lanes);
             }
         }
-        nodes.push(Node {
-            added: [0.0; 3],
-            first_child: next.len() as u32,
-        });
         self.counts.0[RayKind::Shadow.index()] += u64::from(shadows);
     }
 }
@@ -290,28 +339,28 @@ struct PerSample<'a> {
     /// Empty when the heat maps are not drawn.
     deepest: &'a mut [u8],
     /// Kept only when a tree can reach the budget.
-    cast_shadow: Option<&'a mut Vec<bool>>,
+    kinds: Option<&'a mut Vec<(RayKind, bool)>>,
     depth: u8,
 }
 
 impl PerSample<'_> {
-    /// Count one group's rays into their samples (for the heat maps and
-    /// the budget), and stop the trees that reached the budget.
-    fn count(&mut self, samples: &[u32], cast_shadow: i32, sends: &mut Sends) {
-        for (lane, &sample) in samples.iter().enumerate() {
-            let sample = sample as usize;
+    /// Count one group's rays `at` into their samples (for the heat maps
+    /// and the budget), and stop the trees that reached the budget.
+    fn count(&mut self, rays: &Group, lanes: usize, cast_shadow: i32, sends: &mut Sends) {
+        for lane in 0..lanes {
+            let sample = rays.sample[lane] as usize;
             let shadow = cast_shadow & (1 << lane) != 0;
             let counted = &mut self.rays[sample];
             *counted += 1 + u32::from(shadow);
             if let Some(deepest) = self.deepest.get_mut(sample) {
                 *deepest = self.depth;
             }
-            if let Some(cast_shadow) = &mut self.cast_shadow {
+            if let Some(kinds) = &mut self.kinds {
                 if *counted >= RAY_BUDGET {
                     sends.reflects &= !(1 << lane);
                     sends.transmits &= !(1 << lane);
                 }
-                cast_shadow.push(shadow);
+                kinds.push((rays.kind[lane], shadow));
             }
         }
     }
@@ -334,21 +383,54 @@ impl Sends {
     fn any(&self) -> bool {
         self.reflects | self.transmits != 0
     }
+}
 
-    /// How many rays lane `lane` sends on: 0, 1 or 2.
-    fn children(&self, lane: usize) -> u32 {
-        ((self.reflects >> lane) & 1) as u32 + ((self.transmits >> lane) & 1) as u32
+/// The ledger's links of a group whose rays send rays on. The group's
+/// transmitted rays are packed into the next wave first, from number
+/// `first` on, then its reflected ones; the scalar stack pops a ray's
+/// transmitted child first, then its reflected one, then goes on `after`.
+struct Links {
+    /// Each lane's link: its first child, or `after` if it sent nothing.
+    next: [u32; LANES],
+    /// The transmitted children's: their sibling, or their parent's `after`.
+    transmitted_after: [u32; LANES],
+    /// The reflected children's: their parent's `after`.
+    reflected_after: [u32; LANES],
+}
+
+impl Links {
+    fn new(sends: &Sends, first: u32, after: [u32; LANES]) -> Links {
+        let (t, r) = (sends.transmits, sends.reflects);
+        let mut links = Links {
+            next: after,
+            transmitted_after: after,
+            reflected_after: after,
+        };
+        for lane in 0..LANES {
+            // The lanes before this one, whose children are packed first.
+            let before = (1 << lane) - 1;
+            let transmitted = first + (t & before).count_ones();
+            let reflected = first + t.count_ones() + (r & before).count_ones();
+            if r & (1 << lane) != 0 {
+                links.next[lane] = reflected;
+                links.transmitted_after[lane] = reflected;
+            }
+            if t & (1 << lane) != 0 {
+                links.next[lane] = transmitted;
+            }
+        }
+        links
     }
 }
 
-/// Append the group's transmitted and reflected rays to the next wave,
-/// lane by lane and within a lane in the order the scalar ray stack pops
-/// them (transmitted first), and count them by kind: every ray sent on is
-/// traced. The registers are read out once per group.
+/// Append the group's transmitted rays, then its reflected ones, to the
+/// next wave, each packed densely in lane order, and count them by kind:
+/// every ray sent on is traced.
 fn pack_children(
     shaded: &Shaded,
     sends: &Sends,
-    samples: &[u32],
+    sample: [u32; LANES],
+    links: &Links,
     next: &mut Rays,
     counts: &mut RayCounts,
 ) {
@@ -361,32 +443,64 @@ fn pack_children(
     count(RayKind::Reflection, sends.reflects);
     count(RayKind::Refraction, sends.transmits & !total);
     count(RayKind::TotalInternalReflection, sends.transmits & total);
-    let transmitted = shaded
-        .transmitted
-        .map(|(from, direction, _)| LaneRays::new(from, direction, shaded.transmission));
-    let reflected = shaded
-        .reflected
-        .map(|(from, direction)| LaneRays::new(from, direction, shaded.reflection));
-    let mut lanes = sends.reflects | sends.transmits;
-    while lanes != 0 {
-        let lane = lanes.trailing_zeros() as usize;
-        lanes &= lanes - 1;
-        let sample = samples[lane];
-        if let Some(rays) = &transmitted
-            && sends.transmits & (1 << lane) != 0
-        {
-            let kind = if total & (1 << lane) != 0 {
+    if let Some((origin, direction, _)) = shaded.transmitted
+        && sends.transmits != 0
+    {
+        let kind = std::array::from_fn(|lane| {
+            if total & (1 << lane) != 0 {
                 RayKind::TotalInternalReflection
             } else {
                 RayKind::Refraction
-            };
-            next.push_lane(rays, lane, sample, kind);
-        }
-        if let Some(rays) = &reflected
-            && sends.reflects & (1 << lane) != 0
-        {
-            next.push_lane(rays, lane, sample, RayKind::Reflection);
-        }
+            }
+        });
+        let rays = Group {
+            origin,
+            direction,
+            weight: shaded.transmission,
+            sample,
+            kind,
+            after: links.transmitted_after,
+        };
+        next.push_packed(sends.transmits, &rays);
+    }
+    if let Some((origin, direction)) = shaded.reflected
+        && sends.reflects != 0
+    {
+        let rays = Group {
+            origin,
+            direction,
+            weight: shaded.reflection,
+            sample,
+            kind: [RayKind::Reflection; LANES],
+            after: links.reflected_after,
+        };
+        next.push_packed(sends.reflects, &rays);
     }
 }
 // ANCHOR_END: pack
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_ray_that_sends_both_links_to_its_transmitted_child_then_its_reflected_one() {
+        // Lane 1 sends both rays, lane 3 only a reflected one, lane 6 only
+        // a transmitted one; the others nothing. The next wave's rays are
+        // numbered from 100: transmitted ones (lanes 1, 6) first, then the
+        // reflected ones (lanes 1, 3).
+        let sends = Sends {
+            transmits: 0b0100_0010,
+            reflects: 0b0000_1010,
+        };
+        let after: [u32; LANES] = std::array::from_fn(|lane| 10 + lane as u32);
+        let links = Links::new(&sends, 100, after);
+        assert_eq!(links.next, [10, 100, 12, 103, 14, 15, 101, 17]);
+        // Lane 1's transmitted ray goes on with its sibling (102), lane 6's
+        // with what lane 6 went on with.
+        assert_eq!(links.transmitted_after[1], 102);
+        assert_eq!(links.transmitted_after[6], 16);
+        assert_eq!(links.reflected_after[1], 11);
+        assert_eq!(links.reflected_after[3], 13);
+    }
+}
