@@ -172,24 +172,32 @@ pub fn render(
     tracer.caustics = map.as_ref().map(|(m, _)| m);
     let eye_start = Instant::now();
     let (width, height) = (settings.width as usize, settings.height as usize);
-    let mut pixels = vec![PixelSums::default(); width * height];
     // ANCHOR: rows
-    pixels
-        .par_chunks_mut(width)
-        .enumerate()
-        .for_each(|(j, row)| {
-            for (i, pixel) in row.iter_mut().enumerate() {
-                *pixel = render_pixel(&tracer, camera, settings, (i as u32, j as u32));
+    // Every pixel on every core, a row at least per task; collected by the
+    // workers straight into place, so no thread but theirs touches the
+    // buffer first.
+    let pixels: Vec<PixelSums> = (0..width * height)
+        .into_par_iter()
+        .with_min_len(width)
+        .map(|k| {
+            let (i, j) = (k % width, k / width);
+            if i + 1 == width {
+                progress.inc(1);
             }
-            progress.inc(1);
-        });
+            render_pixel(&tracer, camera, settings, (i as u32, j as u32))
+        })
+        .collect();
     // ANCHOR_END: rows
     let elapsed = eye_start.elapsed();
-    let image = |f: &dyn Fn(&PixelSums) -> Vec3| {
+    // Each output image is gathered on every core: a fresh 800 × 600 image
+    // is 7.7 MB whose pages the kernel must clear as they are first written,
+    // and one thread doing that for all seven took longer than the render
+    // of a few paths per pixel.
+    let image = |f: &(dyn Fn(&PixelSums) -> Vec3 + Sync)| {
         LinearImage::from_pixels(
             settings.width,
             settings.height,
-            pixels.iter().map(f).collect(),
+            pixels.par_iter().map(f).collect(),
         )
     };
     let terms = [0, 1, 2, 3, 4].map(|t| image(&|p: &PixelSums| p.terms.as_array()[t]));

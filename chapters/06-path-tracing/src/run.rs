@@ -9,6 +9,7 @@ use clap::{Args, FromArgMatches};
 use raylab::{Camera, Scene};
 use raylab_cli::output::save_png;
 use raylab_cli::{self as cli, CliError, Options, Program};
+use rayon::prelude::*;
 
 use crate::exr::save_exr;
 use crate::integrator::{Materials, Terms};
@@ -153,28 +154,36 @@ pub fn run(options: &Options, flags: &Flags) -> Result<Report, CliError> {
     let rendered = render(&scene, &camera, &settings, &progress);
     progress.finish_and_clear();
 
-    let mut written = Vec::new();
-    let png = |name: &str, image: &raylab::linear_image::LinearImage| {
-        let path = out_dir.join(name);
-        save_png(&image.to_srgb8(), &path).map(|()| path)
-    };
-    written.push(png("render.png", &rendered.image)?);
-    let exr = |name: &str, image: &raylab::linear_image::LinearImage| {
-        let path = out_dir.join(name);
-        save_exr(image, &path).map(|()| path)
-    };
-    written.push(exr("render.exr", &rendered.image)?);
+    // The files in the order they are listed, render.png first, written
+    // on every core at once: each encoder is one thread's work, and an
+    // 800 × 600 EXR takes as long to write as a few paths per pixel take to
+    // render.
+    let mut files = vec![
+        ("render.png".to_owned(), &rendered.image),
+        ("render.exr".to_owned(), &rendered.image),
+    ];
     if settings.sampling.spp() > 1 {
-        written.push(exr("variance.exr", &rendered.variance)?);
+        files.push(("variance.exr".to_owned(), &rendered.variance));
     }
     if !options.no_diagrams {
-        for (name, image) in TERM_FILES.iter().zip(&rendered.terms) {
-            written.push(exr(&format!("{name}.exr"), image)?);
-        }
-        for (name, image) in TERM_FILES.iter().zip(&rendered.terms) {
-            written.push(png(&format!("{name}.png"), image)?);
+        for extension in ["exr", "png"] {
+            for (name, image) in TERM_FILES.iter().zip(&rendered.terms) {
+                files.push((format!("{name}.{extension}"), image));
+            }
         }
     }
+    let written = files
+        .par_iter()
+        .map(|(name, image)| {
+            let path = out_dir.join(name);
+            if name.ends_with(".png") {
+                save_png(&image.to_srgb8(), &path)
+            } else {
+                save_exr(image, &path)
+            }
+            .map(|()| path)
+        })
+        .collect::<Result<Vec<_>, _>>()?;
     Ok(Report {
         render: rendered,
         out_dir,
