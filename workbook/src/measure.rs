@@ -138,6 +138,20 @@ pub fn shares<const N: usize>(terms: &[LinearImage; N], mask: Option<&[bool]>) -
     sums.map(|s| if total > 0.0 { s / total } else { 0.0 })
 }
 
+/// The mean luminance over the pixels of `mask` (or over all of them), and
+/// how many pixels that is; 0 for an empty mask.
+pub fn mean_luminance(image: &LinearImage, mask: Option<&[bool]>) -> (f64, usize) {
+    let (sum, count) = image
+        .pixels()
+        .iter()
+        .enumerate()
+        .filter(|&(k, _)| mask.is_none_or(|m| m[k]))
+        .fold((0f64, 0usize), |(s, n), (_, &c)| {
+            (s + f64::from(luminance(c)), n + 1)
+        });
+    (sum / count.max(1) as f64, count)
+}
+
 /// The mean, over the pixels of `mask`, of each channel's radiance divided
 /// by the albedo there: the light a surface *receives* (irradiance / π for
 /// a matte one), whatever the checker's colour. `None` for an empty mask.
@@ -214,6 +228,23 @@ mod tests {
     use super::*;
     use raylab::Material;
     use raylab::light::{Sky, Sun};
+
+    #[test]
+    fn the_mean_luminance_counts_only_the_masked_pixels() {
+        // Luminance of white is 1, of pure green 0.7152.
+        let image = LinearImage::from_pixels(
+            3,
+            1,
+            vec![Vec3::ONE, Vec3::new(0.0, 1.0, 0.0), Vec3::splat(3.0)],
+        );
+        let (mean, n) = mean_luminance(&image, Some(&[true, true, false]));
+        assert_eq!(n, 2);
+        assert!((mean - (1.0 + 0.7152) / 2.0).abs() < 1e-6, "{mean}");
+        let (all, n) = mean_luminance(&image, None);
+        assert_eq!(n, 3);
+        assert!((all - (4.0 + 0.7152) / 3.0).abs() < 1e-6, "{all}");
+        assert_eq!(mean_luminance(&image, Some(&[false; 3])), (0.0, 0));
+    }
     use raylab::plane::{Checker, Plane};
     use raylab::scene::Ground;
     use raylab::sphere::Sphere;

@@ -23,8 +23,8 @@ use raylab_plot::colour::series_colour;
 use raylab_plot::{Colormap, ColourScale, Corner, HeatmapFigure, LinePlot, Series, montage};
 
 use crate::measure::{
-    GroundMasks, ground_masks, lab_shadow_ratio, luminance, mean_over_albedo, mean_variance,
-    primary_hits, rmse, shares, signed_difference, symmetric_range,
+    GroundMasks, ground_masks, lab_shadow_ratio, luminance, mean_luminance, mean_over_albedo,
+    mean_variance, primary_hits, rmse, shares, signed_difference, symmetric_range,
 };
 use crate::penumbra;
 use crate::{JobError, Size};
@@ -215,6 +215,16 @@ fn save_all(
     Ok(written)
 }
 
+/// A table row comparing one set of `count` pixels in two images: the
+/// mean luminance in each, and the second over the first.
+fn ratio_row(text: &mut String, name: &str, count: usize, a: f64, b: f64) {
+    let _ = writeln!(
+        text,
+        "| {name} | {count} | {a:.4} | {b:.4} | {:.2} |",
+        b / a.max(1e-9)
+    );
+}
+
 // ---------------------------------------------------------------------------
 // 1. Whitted against path traced
 
@@ -259,19 +269,6 @@ fn comparison(
     }
     .render();
 
-    let mean = |image: &[f32], mask: Option<&[bool]>| {
-        let chosen: Vec<f64> = image
-            .iter()
-            .enumerate()
-            .filter(|(k, _)| mask.is_none_or(|m| m[*k]))
-            .map(|(_, &v)| f64::from(v))
-            .collect();
-        chosen.iter().sum::<f64>() / chosen.len().max(1) as f64
-    };
-    let lum = |image: &LinearImage| -> Vec<f32> {
-        image.pixels().iter().map(|&c| luminance(c)).collect()
-    };
-    let (lw, lp) = (lum(whitted), lum(&path.image));
     let brighter = difference.iter().filter(|&&d| d > 0.01).count();
     let darker = difference.iter().filter(|&&d| d < -0.01).count();
     let mut text = String::from(
@@ -286,19 +283,17 @@ fn comparison(
             Some(masks.shadowed.as_slice()),
         ),
     ] {
-        let count = mask.map_or(lw.len(), |m| m.iter().filter(|&&b| b).count());
-        let (a, b) = (mean(&lw, mask), mean(&lp, mask));
-        let _ = writeln!(
-            text,
-            "| {name} | {count} | {a:.4} | {b:.4} | {:.2} |",
-            b / a.max(1e-9)
+        let ((a, count), (b, _)) = (
+            mean_luminance(whitted, mask),
+            mean_luminance(&path.image, mask),
         );
+        ratio_row(&mut text, name, count, a, b);
     }
     let _ = writeln!(
         text,
         "\nMean luminance (linear) over each set of pixels. Of the {} pixels, {} are brighter \
          by more than 0.01 in chapter 6 and {} darker by more than 0.01.",
-        lw.len(),
+        difference.len(),
         brighter,
         darker
     );
@@ -483,17 +478,6 @@ fn materials_figure(
             })
             .collect()
     };
-    let mean = |image: &LinearImage, mask: &[bool]| {
-        let (s, n) = image
-            .pixels()
-            .iter()
-            .zip(mask)
-            .filter(|(_, m)| **m)
-            .fold((0.0f64, 0usize), |(s, n), (c, _)| {
-                (s + f64::from(luminance(*c)), n + 1)
-            });
-        (s / n.max(1) as f64, n)
-    };
     let mut text = String::from(
         "| pixels of the glass ball | count | lab | fresnel | fresnel / lab |\n\
          |---|---:|---:|---:|---:|\n",
@@ -503,12 +487,11 @@ fn materials_figure(
         ("middle: cos θ above 0.9", 0.9, 1.01),
     ] {
         let mask = band(low, high);
-        let ((a, n), (b, _)) = (mean(&lab.image, &mask), mean(&fresnel.image, &mask));
-        let _ = writeln!(
-            text,
-            "| {name} | {n} | {a:.4} | {b:.4} | {:.2} |",
-            b / a.max(1e-9)
+        let ((a, n), (b, _)) = (
+            mean_luminance(&lab.image, Some(&mask)),
+            mean_luminance(&fresnel.image, Some(&mask)),
         );
+        ratio_row(&mut text, name, n, a, b);
     }
     let _ = writeln!(
         text,
