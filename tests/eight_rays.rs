@@ -116,6 +116,25 @@ fn every_rays_per_pixel_pattern_gives_chapter_5s_bytes_for_the_same_seed() {
 }
 
 #[test]
+fn points_the_same_in_every_pixel_give_the_same_bytes_whatever_their_period() {
+    // Chapter 7 reads such points from a table of one period of groups
+    // (lcm(spp, 8) samples): 1 group for 4 points, 9 for 9, 25 for 25, 8
+    // for 64; 1024 points are past the table and found lane by lane.
+    let (scene, camera) = (Scene::lab(), Camera::lab());
+    for (spp, size) in [
+        (4, (45, 33)),
+        (9, (45, 33)),
+        (25, (23, 17)),
+        (64, (11, 9)),
+        (1024, (5, 3)),
+    ] {
+        let mut s = settings(Like::AntiAliasing, size);
+        s.sampling = Sampling::new(spp, Some(Pattern::Grid), 0).expect("a square");
+        assert_same(Like::AntiAliasing, &scene, &camera, &s);
+    }
+}
+
+#[test]
 fn every_scene_file_renders_the_same() {
     let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes");
     let mut files: Vec<_> = std::fs::read_dir(&scenes)

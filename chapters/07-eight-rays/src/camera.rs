@@ -23,6 +23,67 @@ pub struct PrimaryRays<'a> {
     right: Vec3x8,
     up: Vec3x8,
     eye: Vec3x8,
+    /// For points that are the same in every pixel: the lanes' places.
+    repeating: Option<Repeating>,
+}
+
+/// The most groups in a [`Repeating`] period (32 covers every `spp` up to
+/// 32 and the squares up to 256; others use the general loop).
+const MAX_PERIOD: usize = 32;
+
+/// Where the lanes' samples lie when every pixel has the same points (the
+/// pixel centre, the lab's five, the grid). Sample `s` is pixel `s / spp`'s
+/// point `s % spp`, so the lanes' pattern repeats every `lcm(spp, 8)`
+/// samples: `period` groups, `pixels` pixels further on. One period's
+/// offsets are worked out per row, and each group adds its first pixel to
+/// them in registers, instead of finding eight points one lane at a time.
+struct Repeating {
+    period: usize,
+    pixels: usize,
+    /// Per group of the period: each lane's pixel counted from the
+    /// period's first (a whole number), and its point's offset.
+    pixel: [f32x8; MAX_PERIOD],
+    sx: [f32x8; MAX_PERIOD],
+    sy: [f32x8; MAX_PERIOD],
+}
+
+impl Repeating {
+    fn new(sampling: &raylab::Sampling, j: u32) -> Option<Repeating> {
+        if sampling.is_random() {
+            return None;
+        }
+        let spp = sampling.spp() as usize;
+        let samples = spp * LANES / gcd(spp, LANES);
+        let period = samples / LANES;
+        if period > MAX_PERIOD {
+            return None;
+        }
+        // Any pixel's points are every pixel's: the row's first stands in.
+        let points = sampling.pixel((0, j));
+        let mut repeating = Repeating {
+            period,
+            pixels: samples / spp,
+            pixel: [f32x8::ZERO; MAX_PERIOD],
+            sx: [f32x8::ZERO; MAX_PERIOD],
+            sy: [f32x8::ZERO; MAX_PERIOD],
+        };
+        for group in 0..period {
+            let (mut pixel, mut sx, mut sy) = ([0.0; LANES], [0.0; LANES], [0.0; LANES]);
+            for lane in 0..LANES {
+                let sample = group * LANES + lane;
+                pixel[lane] = (sample / spp) as f32;
+                (sx[lane], sy[lane]) = points.offset((sample % spp) as u32);
+            }
+            repeating.pixel[group] = f32x8::from(pixel);
+            repeating.sx[group] = f32x8::from(sx);
+            repeating.sy[group] = f32x8::from(sy);
+        }
+        Some(repeating)
+    }
+}
+
+fn gcd(a: usize, b: usize) -> usize {
+    if b == 0 { a } else { gcd(b, a % b) }
 }
 
 impl<'a> PrimaryRays<'a> {
@@ -39,6 +100,7 @@ impl<'a> PrimaryRays<'a> {
             right: Vec3x8::splat(camera.right()),
             up: Vec3x8::splat(camera.up()),
             eye: Vec3x8::splat(camera.eye),
+            repeating: Repeating::new(&settings.sampling, j),
         }
     }
 
@@ -56,30 +118,31 @@ impl<'a> PrimaryRays<'a> {
     pub fn group(&self, group: usize) -> Group {
         let first = group * LANES;
         let count = (self.len() - first).min(LANES);
-        // Where in the image each lane's sample lies, in pixels.
-        let mut column = [0.0f32; LANES];
-        let mut row = [0.0f32; LANES];
-        let mut sample = [0u32; LANES];
-        let (mut i, mut k) = (first / self.spp, first % self.spp);
-        // What a pixel's samples share (a random pattern's hash of the
-        // pixel), worked out once per pixel rather than once per sample.
-        let sampling = &self.settings.sampling;
-        let mut pixel = sampling.pixel((i as u32, self.j));
-        for lane in 0..count {
-            let (sx, sy) = pixel.offset(k as u32);
-            column[lane] = i as f32 + sx;
-            row[lane] = self.j as f32 + sy;
-            sample[lane] = (first + lane) as u32;
-            k += 1;
-            if k == self.spp && lane + 1 < count {
-                (i, k) = (i + 1, 0);
-                pixel = sampling.pixel((i as u32, self.j));
+        let (column, row) = match &self.repeating {
+            Some(repeating) if count == LANES => {
+                let (period, phase) = (group / repeating.period, group % repeating.period);
+                // `i as f32 + sx` as the scalar camera adds it: the pixel's
+                // number is a whole number, exact in an f32, and so is the
+                // sum of its two parts below.
+                let first_pixel = f32x8::splat((period * repeating.pixels) as f32);
+                let column = (first_pixel + repeating.pixel[phase]) + repeating.sx[phase];
+                let row = f32x8::splat(self.j as f32) + repeating.sy[phase];
+                (column, row)
             }
-        }
+            _ => self.places(first, count),
+        };
+        // Padding lanes are sample 0's: traced, and never read.
+        let sample = std::array::from_fn(|lane| {
+            if lane < count {
+                (first + lane) as u32
+            } else {
+                0
+            }
+        });
         let two = f32x8::splat(2.0);
         let (w, h) = self.size;
-        let x = (two * f32x8::from(column) / w - f32x8::ONE) * self.half_height * self.aspect;
-        let y = (f32x8::ONE - two * f32x8::from(row) / h) * self.half_height;
+        let x = (two * column / w - f32x8::ONE) * self.half_height * self.aspect;
+        let y = (f32x8::ONE - two * row / h) * self.half_height;
         let direction = (self.forward + self.right.scale(x) + self.up.scale(y)).normalize();
         Group {
             origin: self.eye,
@@ -90,6 +153,30 @@ impl<'a> PrimaryRays<'a> {
             // A primary ray's sample is done once its tree is.
             after: [END; LANES],
         }
+    }
+
+    /// Where in the image the samples `first ..` (`count` of them, the
+    /// rest padding at the row's first pixel) lie, in pixels, found one
+    /// lane at a time: for points that differ from pixel to pixel.
+    fn places(&self, first: usize, count: usize) -> (f32x8, f32x8) {
+        let mut column = [0.0f32; LANES];
+        let mut row = [0.0f32; LANES];
+        let (mut i, mut k) = (first / self.spp, first % self.spp);
+        // What a pixel's samples share (a random pattern's hash of the
+        // pixel), worked out once per pixel rather than once per sample.
+        let sampling = &self.settings.sampling;
+        let mut pixel = sampling.pixel((i as u32, self.j));
+        for lane in 0..count {
+            let (sx, sy) = pixel.offset(k as u32);
+            column[lane] = i as f32 + sx;
+            row[lane] = self.j as f32 + sy;
+            k += 1;
+            if k == self.spp && lane + 1 < count {
+                (i, k) = (i + 1, 0);
+                pixel = sampling.pixel((i as u32, self.j));
+            }
+        }
+        (f32x8::from(column), f32x8::from(row))
     }
 }
 // ANCHOR_END: primary

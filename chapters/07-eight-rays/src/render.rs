@@ -1,6 +1,7 @@
 //! The whole image: one row per task on every core, each row traced in
 //! waves, then each sample's rays summed in the scalar tracer's order.
 
+use std::cell::RefCell;
 use std::time::Instant;
 
 use raylab::indicatif::ProgressBar;
@@ -46,9 +47,18 @@ fn count_sample(waves: &Waves, sample: usize, counts: &mut RayCounts) {
 
 /// One worker's tools: its waves, and a scalar tracer for the rare sample
 /// whose tree reaches the ray budget.
-struct Worker<'s> {
-    waves: Waves,
-    scalar: Tracer<'s, EightRays>,
+struct Worker<'w, 's> {
+    waves: &'w mut Waves,
+    scalar: &'w mut Tracer<'s, EightRays>,
+}
+
+thread_local! {
+    /// Each thread's waves, kept from row to row and from render to
+    /// render. Rayon hands a render's rows out in some twenty pieces, and
+    /// waves made afresh for each would grow their arrays again from
+    /// nothing: new memory, whose pages the kernel must clear as they are
+    /// first written.
+    static WAVES: RefCell<Waves> = RefCell::new(Waves::default());
 }
 
 /// Render `scene` as `step`'s chapter would, eight rays at a time; the
@@ -82,17 +92,17 @@ pub fn render_waves(
         .zip(map_rows)
         .enumerate()
         .map_init(
-            || Worker {
-                waves: Waves::default(),
-                scalar: Tracer::new(scene, step, settings.max_depth, settings.epsilon),
-            },
-            |worker, (j, (colour_row, map_row))| {
+            || Tracer::new(scene, step, settings.max_depth, settings.epsilon),
+            |scalar, (j, (colour_row, map_row))| {
                 let row = Row {
                     j: j as u32,
                     colours: colour_row,
                     maps: map_row,
                 };
-                let tally = render_row(worker, &setup, camera, settings, row);
+                let tally = WAVES.with_borrow_mut(|waves| {
+                    let mut worker = Worker { waves, scalar };
+                    render_row(&mut worker, &setup, camera, settings, row)
+                });
                 progress.inc(1);
                 tally
             },
@@ -120,7 +130,7 @@ struct Row<'a> {
 /// One image row: its primary rays as wave 1, every wave traced, then
 /// each pixel's samples summed in the pattern's order.
 fn render_row(
-    worker: &mut Worker,
+    worker: &mut Worker<'_, '_>,
     setup: &Setup,
     camera: &Camera,
     settings: &Settings,
@@ -128,7 +138,7 @@ fn render_row(
 ) -> RowTally {
     let spp = settings.sampling.spp() as usize;
     let j = row.j;
-    let waves = &mut worker.waves;
+    let waves = &mut *worker.waves;
     waves.start(settings.width as usize * spp, setup);
     waves.trace(setup, &PrimaryRays::new(camera, settings, j));
 

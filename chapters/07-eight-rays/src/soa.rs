@@ -3,9 +3,9 @@
 //! The scalar chapters keep a ray as one struct (`origin`, `direction`, …):
 //! an *array of structures*. To work on eight rays at once, the eight
 //! origins' x coordinates must sit next to each other in one register, the
-//! y coordinates in another, and so on. So a wave of rays is stored as one
-//! array per number (a *structure of arrays*), and eight consecutive
-//! entries load straight into one `f32x8`.
+//! y coordinates in another, and so on: a *structure of arrays*. Between
+//! waves a ray is kept as one record of eight numbers, and a transpose
+//! turns eight records into eight such registers and back.
 
 use std::ops::{Add, Neg, Sub};
 
@@ -122,22 +122,22 @@ impl Sub for Vec3x8 {
 }
 
 // ANCHOR: rays
-/// A wave of rays, one array per number. The arrays are kept longer than
-/// the wave (see [`Rays::make_room`]) and written in place, eight entries
-/// at a time, with no check of capacity per ray; the first `len` entries
-/// are the real rays, and [`Rays::pad`] fills the last 8-lane group.
+/// A wave of rays. Each ray is one *record* of eight numbers, exactly one
+/// `f32x8`: its origin, its direction, its weight, and the number of its
+/// sample (as an `f32`'s bits). In registers a group is eight arrays, one
+/// per number; in memory a wave is records, one per ray. An 8 × 8
+/// transpose turns one form into the other ([`Rays::group`],
+/// [`Rays::push_packed`]), so that loading a group is eight loads and
+/// packing a ray sent on is one store, where one array per number would
+/// take ten stores to ten places for every ray.
+///
+/// The arrays are kept longer than the wave (see [`Rays::make_room`]) and
+/// written in place with no check of capacity per ray; the first `len`
+/// entries are the real rays, and [`Rays::pad`] fills the last group.
 #[derive(Clone, Debug, Default)]
 pub struct Rays {
-    ox: Vec<f32>,
-    oy: Vec<f32>,
-    oz: Vec<f32>,
-    dx: Vec<f32>,
-    dy: Vec<f32>,
-    dz: Vec<f32>,
-    /// The share of the ray's light that reaches its sample.
-    weight: Vec<f32>,
-    /// Which of the row's samples the ray belongs to.
-    pub sample: Vec<u32>,
+    /// `[ox, oy, oz, dx, dy, dz, weight, sample]` per ray.
+    records: Vec<f32x8>,
     pub kind: Vec<RayKind>,
     /// The ray that the scalar stack pops once this ray's whole subtree is
     /// done, as a number in the row's ledger ([`crate::wave::Ledger`]), or
@@ -154,10 +154,26 @@ pub struct Rays {
 pub struct Group {
     pub origin: Vec3x8,
     pub direction: Vec3x8,
+    /// The share of the ray's light that reaches its sample.
     pub weight: f32x8,
+    /// Which of the row's samples the ray belongs to.
     pub sample: [u32; LANES],
     pub kind: [RayKind; LANES],
     pub after: [u32; LANES],
+}
+
+impl Group {
+    // ANCHOR: records
+    /// The eight rays as eight records, lane `k`'s in entry `k`: the
+    /// registers (one number of every ray each) transposed.
+    fn records(&self) -> [f32x8; LANES] {
+        let (o, d) = (self.origin, self.direction);
+        // A sample's number travels in a float lane as its bits; the
+        // transpose moves bits and never does arithmetic on them.
+        let sample = f32x8::from(self.sample.map(f32::from_bits));
+        f32x8::transpose([o.x, o.y, o.z, d.x, d.y, d.z, self.weight, sample])
+    }
+    // ANCHOR_END: records
 }
 
 impl Rays {
@@ -166,27 +182,12 @@ impl Rays {
         self.len = 0;
     }
 
-    fn numbers_mut(&mut self) -> [&mut Vec<f32>; 7] {
-        [
-            &mut self.ox,
-            &mut self.oy,
-            &mut self.oz,
-            &mut self.dx,
-            &mut self.dy,
-            &mut self.dz,
-            &mut self.weight,
-        ]
-    }
-
     /// Make the arrays long enough for `more` rays after the real ones,
     /// and a whole 8-lane group written after those.
     pub fn make_room(&mut self, more: usize) {
         let room = (self.len + more).next_multiple_of(LANES) + LANES;
-        if self.sample.len() < room {
-            for numbers in self.numbers_mut() {
-                numbers.resize(room, 0.0);
-            }
-            self.sample.resize(room, 0);
+        if self.records.len() < room {
+            self.records.resize(room, f32x8::ZERO);
             self.kind.resize(room, RayKind::Primary);
             self.after.resize(room, 0);
         }
@@ -195,10 +196,10 @@ impl Rays {
     /// Append one ray; there must be room for it.
     pub fn push(&mut self, origin: Vec3, direction: Vec3, weight: f32, sample: u32, kind: RayKind) {
         let i = self.len;
-        (self.ox[i], self.oy[i], self.oz[i]) = (origin.x, origin.y, origin.z);
-        (self.dx[i], self.dy[i], self.dz[i]) = (direction.x, direction.y, direction.z);
-        (self.weight[i], self.sample[i], self.kind[i]) = (weight, sample, kind);
-        self.after[i] = crate::wave::END;
+        let (o, d) = (origin, direction);
+        let sample = f32::from_bits(sample);
+        self.records[i] = f32x8::from([o.x, o.y, o.z, d.x, d.y, d.z, weight, sample]);
+        (self.kind[i], self.after[i]) = (kind, crate::wave::END);
         self.len += 1;
     }
 
@@ -206,49 +207,35 @@ impl Rays {
     /// Append the lanes of `rays` that `mask` selects (lane `k` in bit
     /// `k`), packed densely in lane order; there must be room for them.
     pub fn push_packed(&mut self, mask: i32, rays: &Group) {
+        let records = rays.records();
+        let at = self.len..self.len + LANES;
+        let (to, kinds, afters) = (
+            &mut self.records[at.clone()],
+            &mut self.kind[at.clone()],
+            &mut self.after[at],
+        );
         // Every lane at once where all eight are sent on (inside the glass,
-        // most groups): eight entries of each array copied as a block.
+        // most groups): eight records copied as a block.
         if mask == 0xff {
-            self.push_all(rays);
+            to.copy_from_slice(&records);
+            kinds.copy_from_slice(&rays.kind);
+            afters.copy_from_slice(&rays.after);
+            self.len += LANES;
             return;
         }
-        // Otherwise lane by lane: the registers read out once, then one
-        // loop over the selected lanes writes each lane's ten numbers.
-        let (o, d) = (&rays.origin, &rays.direction);
-        let [ox, oy, oz] = [o.x, o.y, o.z].map(f32x8::to_array);
-        let [dx, dy, dz] = [d.x, d.y, d.z].map(f32x8::to_array);
-        let weight = rays.weight.to_array();
+        // Otherwise one record per selected lane, in lane order.
+        let mut packed = 0;
         let mut lanes = mask;
         while lanes != 0 {
             let lane = lanes.trailing_zeros() as usize % LANES;
             lanes &= lanes - 1; // the lowest selected lane is done
-            let i = self.len;
-            (self.ox[i], self.oy[i], self.oz[i]) = (ox[lane], oy[lane], oz[lane]);
-            (self.dx[i], self.dy[i], self.dz[i]) = (dx[lane], dy[lane], dz[lane]);
-            self.weight[i] = weight[lane];
-            (self.sample[i], self.kind[i]) = (rays.sample[lane], rays.kind[lane]);
-            self.after[i] = rays.after[lane];
-            self.len += 1;
+            to[packed] = records[lane];
+            (kinds[packed], afters[packed]) = (rays.kind[lane], rays.after[lane]);
+            packed += 1;
         }
+        self.len += packed;
     }
     // ANCHOR_END: packed
-
-    /// Append all eight rays of `rays`; there must be room for them.
-    fn push_all(&mut self, rays: &Group) {
-        let at = self.len..self.len + LANES;
-        let (o, d) = (&rays.origin, &rays.direction);
-        self.ox[at.clone()].copy_from_slice(o.x.as_array_ref());
-        self.oy[at.clone()].copy_from_slice(o.y.as_array_ref());
-        self.oz[at.clone()].copy_from_slice(o.z.as_array_ref());
-        self.dx[at.clone()].copy_from_slice(d.x.as_array_ref());
-        self.dy[at.clone()].copy_from_slice(d.y.as_array_ref());
-        self.dz[at.clone()].copy_from_slice(d.z.as_array_ref());
-        self.weight[at.clone()].copy_from_slice(rays.weight.as_array_ref());
-        self.sample[at.clone()].copy_from_slice(&rays.sample);
-        self.kind[at.clone()].copy_from_slice(&rays.kind);
-        self.after[at].copy_from_slice(&rays.after);
-        self.len += LANES;
-    }
 
     /// The real rays (without the padding).
     pub fn len(&self) -> usize {
@@ -273,44 +260,28 @@ impl Rays {
             return;
         }
         self.make_room(0);
-        for numbers in self.numbers_mut() {
-            let last = numbers[len - 1];
-            numbers[len..padded].fill(last);
-        }
+        let last = self.records[len - 1];
+        self.records[len..padded].fill(last);
     }
 
-    fn load(numbers: &[f32], group: usize) -> f32x8 {
-        f32x8::from(lanes_of(numbers, group))
-    }
-
-    pub fn origins(&self, group: usize) -> Vec3x8 {
-        Vec3x8 {
-            x: Rays::load(&self.ox, group),
-            y: Rays::load(&self.oy, group),
-            z: Rays::load(&self.oz, group),
-        }
-    }
-
-    pub fn directions(&self, group: usize) -> Vec3x8 {
-        Vec3x8 {
-            x: Rays::load(&self.dx, group),
-            y: Rays::load(&self.dy, group),
-            z: Rays::load(&self.dz, group),
-        }
-    }
-
-    pub fn weights(&self, group: usize) -> f32x8 {
-        Rays::load(&self.weight, group)
-    }
-
-    /// Group `group`'s eight rays (the padding lanes' sample, kind and
-    /// link are stale: only the real lanes' are read).
+    /// Group `group`'s eight rays (the padding lanes' kind and link are
+    /// stale: only the real lanes' are read).
     pub fn group(&self, group: usize) -> Group {
+        let [ox, oy, oz, dx, dy, dz, weight, sample] =
+            f32x8::transpose(lanes_of(&self.records, group));
         Group {
-            origin: self.origins(group),
-            direction: self.directions(group),
-            weight: self.weights(group),
-            sample: lanes_of(&self.sample, group),
+            origin: Vec3x8 {
+                x: ox,
+                y: oy,
+                z: oz,
+            },
+            direction: Vec3x8 {
+                x: dx,
+                y: dy,
+                z: dz,
+            },
+            weight,
+            sample: sample.to_array().map(f32::to_bits),
             kind: lanes_of(&self.kind, group),
             after: lanes_of(&self.after, group),
         }
@@ -361,7 +332,10 @@ mod tests {
         }
         rays.pad();
         assert_eq!((rays.len(), rays.groups()), (3, 1));
-        assert_eq!(rays.weights(0).to_array(), [0., 1., 2., 2., 2., 2., 2., 2.]);
+        assert_eq!(
+            rays.group(0).weight.to_array(),
+            [0., 1., 2., 2., 2., 2., 2., 2.]
+        );
     }
 
     #[test]
@@ -381,9 +355,15 @@ mod tests {
         rays.push_packed(0b1111_1111, &eight);
         rays.pad();
         assert_eq!((rays.len(), rays.groups()), (11, 2));
-        assert_eq!(rays.weights(0).to_array(), [1., 4., 6., 0., 1., 2., 3., 4.]);
-        assert_eq!(rays.weights(1).to_array(), [5., 6., 7., 7., 7., 7., 7., 7.]);
-        assert_eq!(&rays.sample[..4], &[11, 14, 16, 10]);
+        assert_eq!(
+            rays.group(0).weight.to_array(),
+            [1., 4., 6., 0., 1., 2., 3., 4.]
+        );
+        assert_eq!(
+            rays.group(1).weight.to_array(),
+            [5., 6., 7., 7., 7., 7., 7., 7.]
+        );
+        assert_eq!(&rays.group(0).sample[..4], &[11, 14, 16, 10]);
         assert_eq!(&rays.after[..4], &[21, 24, 26, 20]);
     }
 }
