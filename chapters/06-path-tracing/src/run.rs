@@ -13,7 +13,7 @@ use rayon::prelude::*;
 
 use crate::exr::save_exr;
 use crate::integrator::{Materials, Terms};
-use crate::render::{PathRender, PathSettings, render};
+use crate::render::{PathRender, PathSettings, Tracer, render};
 use crate::sun::MAX_SUN_SIZE;
 use raylab::sampling::{Pattern, Sampling};
 
@@ -40,6 +40,10 @@ pub struct Flags {
     /// Add the caustics: light traced from the sun through mirror and glass onto the ground
     #[arg(long)]
     pub caustics: bool,
+
+    /// How the paths are traced, to the same bytes: one at a time (scalar, the chapter's definition) or eight at a time in SIMD lanes (eight, faster)
+    #[arg(long, value_enum, default_value_t = Tracer::Scalar)]
+    pub tracer: Tracer,
 }
 
 fn parse_sun_size(text: &str) -> Result<f32, String> {
@@ -115,6 +119,7 @@ pub fn settings(options: &Options, flags: &Flags) -> Result<PathSettings, CliErr
         sun_size: flags.sun_size,
         caustics: flags.caustics,
         photons_per_sphere: crate::caustics::PHOTONS_PER_SPHERE,
+        tracer: flags.tracer,
     })
 }
 
