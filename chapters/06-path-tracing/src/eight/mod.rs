@@ -138,11 +138,10 @@ impl Rows<'_, '_> {
             // their light to the window, which sums what is complete.
             let ended = self.paths.bounce(self.tracer, self.scene).move_mask() as u32;
             if ended != 0 {
-                let terms = self.paths.terms.to_lanes();
-                let rays = self.paths.rays.to_array();
+                let rays = self.paths.rays.as_array_ref();
                 for lane in lanes_of(ended) {
-                    self.window
-                        .finish(job[lane], terms[lane], rays[lane] as u32);
+                    let terms = self.paths.terms.lane(lane);
+                    self.window.finish(job[lane], terms, rays[lane] as u32);
                 }
                 self.window.sum_in_order(spp, out);
             }

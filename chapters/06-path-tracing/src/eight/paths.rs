@@ -161,16 +161,9 @@ impl Paths {
         // The lobe, per lane and with the learner's `choose_lobe`, only
         // where there is a choice: a matte surface draws no number for it.
         let (mut mirror, mut refraction) = (0u32, 0u32);
-        let choosing = (shading & s.chooses).move_mask() as u32;
-        let (origins, directions) = if choosing != 0 {
-            (self.origin.to_lanes(), d.to_lanes())
-        } else {
-            ([Vec3::ZERO; LANES], [Vec3::ZERO; LANES])
-        };
-        for lane in lanes_of(choosing) {
-            let (o, d) = (origins[lane], directions[lane]);
-            let hit = scene.hit(hits, o, d, lane);
-            match tracer.draw_lobe(d, &hit, &mut self.random[lane]) {
+        for lane in lanes_of((shading & s.chooses).move_mask() as u32) {
+            let hit = scene.hit(hits, s, lane);
+            match tracer.draw_lobe(d.lane(lane), &hit, &mut self.random[lane]) {
                 Lobe::Mirror => mirror |= 1 << lane,
                 Lobe::Refraction => refraction |= 1 << lane,
                 Lobe::Diffuse => {}

@@ -7,7 +7,7 @@
 //! the bit.
 
 use raylab::scene::Object;
-use raylab::{Hit, Ray, Scene, Vec3};
+use raylab::{Hit, Material, Scene};
 use wide::{CmpEq, CmpGe, CmpGt, CmpLt, CmpNe, f32x8};
 
 use super::vec3x8::{Vec3x8, negate};
@@ -57,6 +57,7 @@ pub struct Hits {
 #[derive(Clone, Copy, Debug)]
 pub struct Surfaces {
     pub point: Vec3x8,
+    pub normal: Vec3x8,
     pub facing_normal: Vec3x8,
     /// Set where the ray arrives from outside (`dot(d, n) < 0`).
     pub entering: f32x8,
@@ -202,6 +203,7 @@ impl<'s> SceneX8<'s> {
         let facing_normal = Vec3x8::select(entering, normal, -normal);
         Surfaces {
             point,
+            normal,
             facing_normal,
             entering,
             albedo,
@@ -211,18 +213,30 @@ impl<'s> SceneX8<'s> {
         }
     }
 
-    /// Lane `lane`'s hit as the scalar `Hit` of the ray (`origin`,
-    /// `direction`), for the per-lane code that takes one (the learner's
-    /// `choose_lobe`): `Scene::hit_record` itself, whose numbers are the
-    /// lanes' to the bit.
-    pub fn hit(&self, hits: &Hits, origin: Vec3, direction: Vec3, lane: usize) -> Hit {
-        let object = match hits.object.as_array_ref()[lane] {
-            GROUND => Object::Ground,
-            k => Object::Sphere(k as usize - 1),
+    /// Lane `lane`'s hit as the scalar `Hit`, for the per-lane code that
+    /// takes one (the learner's `choose_lobe`): `Scene::hit_record`'s
+    /// numbers, which the lanes hold to the bit.
+    pub fn hit(&self, hits: &Hits, s: &Surfaces, lane: usize) -> Hit {
+        let (object, material) = match hits.object.as_array_ref()[lane] {
+            GROUND => {
+                let albedo = s.albedo.lane(lane);
+                let matte = Material::diffuse(albedo).expect("Scene::new checked the checker");
+                (Object::Ground, matte)
+            }
+            k => {
+                let k = k as usize - 1;
+                (Object::Sphere(k), self.scene.spheres()[k].material)
+            }
         };
-        let ray = Ray { origin, direction };
-        self.scene
-            .hit_record(&ray, hits.t.as_array_ref()[lane], object)
+        Hit {
+            t: hits.t.as_array_ref()[lane],
+            point: s.point.lane(lane),
+            normal: s.normal.lane(lane),
+            facing_normal: s.facing_normal.lane(lane),
+            entering: s.entering.as_array_ref()[lane] != 0.0,
+            object,
+            material,
+        }
     }
 
     // ANCHOR: checker

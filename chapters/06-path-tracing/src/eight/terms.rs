@@ -2,7 +2,7 @@
 
 use wide::{CmpEq, f32x8};
 
-use super::vec3x8::{LANES, Vec3x8};
+use super::vec3x8::Vec3x8;
 use crate::integrator::Terms;
 
 /// [`Terms`] in lanes: lane `l` of each is path `l`'s.
@@ -70,19 +70,15 @@ impl TermsX8 {
         }
     }
 
-    /// The eight paths' terms as scalar [`Terms`].
-    pub fn to_lanes(self) -> [Terms; LANES] {
-        let seen = self.seen.to_lanes();
-        let sun_direct = self.sun_direct.to_lanes();
-        let sky_direct = self.sky_direct.to_lanes();
-        let indirect = self.indirect.to_lanes();
-        let caustics = self.caustics.to_lanes();
-        std::array::from_fn(|l| Terms {
-            seen: seen[l],
-            sun_direct: sun_direct[l],
-            sky_direct: sky_direct[l],
-            indirect: indirect[l],
-            caustics: caustics[l],
-        })
+    /// Path `l`'s terms as scalar [`Terms`].
+    #[inline]
+    pub fn lane(&self, l: usize) -> Terms {
+        Terms {
+            seen: self.seen.lane(l),
+            sun_direct: self.sun_direct.lane(l),
+            sky_direct: self.sky_direct.lane(l),
+            indirect: self.indirect.lane(l),
+            caustics: self.caustics.lane(l),
+        }
     }
 }

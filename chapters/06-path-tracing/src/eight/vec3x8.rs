@@ -59,6 +59,16 @@ impl Vec3x8 {
         std::array::from_fn(|l| Vec3::new(x[l], y[l], z[l]))
     }
 
+    /// Lane `l` as a glam vector.
+    #[inline]
+    pub fn lane(&self, l: usize) -> Vec3 {
+        Vec3::new(
+            self.x.as_array_ref()[l],
+            self.y.as_array_ref()[l],
+            self.z.as_array_ref()[l],
+        )
+    }
+
     /// Eight dot products, summed as glam sums them: `(x·x' + y·y') + z·z'`
     /// (float addition is not associative, and the bytes must match).
     #[inline]

@@ -15,10 +15,18 @@ use crate::render::{PixelSums, SampleSums};
 /// `--max-depth`, so the lanes hardly ever wait for room.
 pub const WINDOW: usize = 512;
 
+/// One finished sample, or an empty slot.
+#[derive(Clone, Copy, Default)]
+struct Slot {
+    terms: Terms,
+    rays: u32,
+    finished: bool,
+}
+
 /// The ring of finished samples, and the pixel being summed.
 pub struct Window {
     /// Sample `q` of the row waits in slot `q % WINDOW`: its terms and rays.
-    slots: Vec<Option<(Terms, u32)>>,
+    slots: Vec<Slot>,
     /// The row's samples summed so far (all before this one are).
     summed: usize,
     pixel: SampleSums,
@@ -28,7 +36,7 @@ pub struct Window {
 impl Default for Window {
     fn default() -> Window {
         Window {
-            slots: vec![None; WINDOW],
+            slots: vec![Slot::default(); WINDOW],
             summed: 0,
             pixel: SampleSums::default(),
         }
@@ -38,7 +46,7 @@ impl Default for Window {
 impl Window {
     /// Ready for a new row.
     pub fn clear(&mut self) {
-        debug_assert!(self.slots.iter().all(Option::is_none));
+        debug_assert!(self.slots.iter().all(|s| !s.finished));
         self.summed = 0;
         self.pixel = SampleSums::default();
     }
@@ -55,7 +63,11 @@ impl Window {
 
     /// Sample `q` has finished with these terms and rays.
     pub fn finish(&mut self, q: usize, terms: Terms, rays: u32) {
-        self.slots[q % WINDOW] = Some((terms, rays));
+        self.slots[q % WINDOW] = Slot {
+            terms,
+            rays,
+            finished: true,
+        };
     }
 
     // ANCHOR: in_order
@@ -63,9 +75,14 @@ impl Window {
     /// sample order, writing each pixel (of `spp` samples) into `out` once
     /// its last sample is in.
     pub fn sum_in_order(&mut self, spp: usize, out: &mut [PixelSums]) {
-        while let Some((terms, rays)) = self.slots[self.summed % WINDOW].take() {
-            self.pixel.rays += rays;
-            self.pixel.add(&terms);
+        loop {
+            let slot = &mut self.slots[self.summed % WINDOW];
+            if !slot.finished {
+                break;
+            }
+            slot.finished = false;
+            self.pixel.rays += slot.rays;
+            self.pixel.add(&slot.terms);
             self.summed += 1;
             if self.summed.is_multiple_of(spp) {
                 let pixel = std::mem::take(&mut self.pixel);
