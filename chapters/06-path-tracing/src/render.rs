@@ -42,9 +42,9 @@ pub struct PathSettings {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
 pub enum Tracer {
     /// One path at a time (`PathTracer::trace`), the chapter's definition
-    #[default]
     Scalar,
     /// Eight paths at a time in SIMD lanes, to the same bytes
+    #[default]
     Eight,
 }
 
@@ -284,8 +284,8 @@ impl fmt::Display for PathSettings {
         if self.caustics {
             write!(f, ", caustics")?;
         }
-        if self.tracer == Tracer::Eight {
-            write!(f, ", eight paths at a time")?;
+        if self.tracer == Tracer::Scalar {
+            write!(f, ", scalar tracer")?;
         }
         Ok(())
     }

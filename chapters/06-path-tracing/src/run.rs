@@ -41,8 +41,8 @@ pub struct Flags {
     #[arg(long)]
     pub caustics: bool,
 
-    /// How the paths are traced, to the same bytes: one at a time (scalar, the chapter's definition) or eight at a time in SIMD lanes (eight, faster)
-    #[arg(long, value_enum, default_value_t = Tracer::Scalar)]
+    /// How the paths are traced: one at a time or eight at a time, to the same bytes
+    #[arg(long, value_enum, default_value_t = Tracer::Eight)]
     pub tracer: Tracer,
 }
 
