@@ -20,21 +20,21 @@ mod camera;
 mod paths;
 mod scene;
 mod terms;
-mod upcoming;
 mod vec3x8;
 mod window;
 
+use raylab::Camera;
 use raylab::indicatif::ProgressBar;
-use raylab::{Camera, Vec3};
+use raylab::sampling::{PixelHash, PixelSamples, Stream};
 use rayon::prelude::*;
 
 use crate::integrator::PathTracer;
+use crate::random::Random;
 use crate::render::{PathSettings, PixelSums};
 use camera::CameraX8;
 use paths::Paths;
 use scene::SceneX8;
-use upcoming::Upcoming;
-use vec3x8::{LANES, Vec3x8, lanes_of, mask_from_bits};
+use vec3x8::{LANES, lanes_of, mask_from_bits};
 use window::Window;
 
 /// Every pixel's sums, one image row per task, ticking `progress` per row.
@@ -55,15 +55,14 @@ pub(crate) fn render_pixels(
         .map(|_| PixelSums::default())
         .collect();
     pixels.par_chunks_mut(width).enumerate().for_each_init(
-        || (Paths::default(), Upcoming::default(), Window::default()),
-        |(paths, upcoming, window), (j, row)| {
+        || (Paths::default(), Window::default()),
+        |(paths, window), (j, row)| {
             let mut rows = Rows {
                 tracer,
                 scene: &scene,
                 camera: &camera,
                 settings,
                 paths,
-                upcoming,
                 window,
             };
             rows.render_row(j as u32, row);
@@ -74,16 +73,21 @@ pub(crate) fn render_pixels(
 }
 
 /// What one task needs to trace rows: the scene and camera in lanes, and
-/// its eight paths, its next camera rays and its window of finished
-/// samples, made once per task.
+/// its eight paths and window of finished samples, made once per task.
 struct Rows<'a, 's> {
     tracer: &'a PathTracer<'s>,
     scene: &'a SceneX8<'s>,
     camera: &'a CameraX8,
     settings: &'a PathSettings,
     paths: &'a mut Paths,
-    upcoming: &'a mut Upcoming,
     window: &'a mut Window,
+}
+
+/// The pixel whose samples are being handed out, with what they share.
+struct Feeding {
+    pixel: usize,
+    samples: PixelSamples,
+    hash: PixelHash,
 }
 
 impl Rows<'_, '_> {
@@ -97,26 +101,36 @@ impl Rows<'_, '_> {
         let total = out.len() * spp;
         let mut job = [0usize; LANES];
         let mut next = 0;
+        let mut feeding: Option<Feeding> = None;
         self.window.clear();
-        self.upcoming.clear();
         while self.window.summed() < total {
             // Every idle lane starts the next sample, while there is one
             // and it fits in the window.
             let idle = !self.paths.active.move_mask() as u32 & 0xff;
-            let mut directions = [Vec3::ZERO; LANES];
+            let (mut column, mut row) = ([0f32; LANES], [0f32; LANES]);
             let mut started = 0;
             for lane in lanes_of(idle) {
                 if next == total || !self.window.has_room_for(next) {
                     break;
                 }
-                let (d, random) = self.upcoming.take(next, (j, total), sampling, self.camera);
-                (directions[lane], self.paths.random[lane]) = (d, random);
+                let (pixel, sample) = (next / spp, (next % spp) as u32);
+                let f = match feeding {
+                    Some(ref f) if f.pixel == pixel => f,
+                    _ => feeding.insert(Feeding {
+                        pixel,
+                        samples: sampling.pixel((pixel as u32, j)),
+                        hash: PixelHash::new(sampling.seed(), (pixel as u32, j)),
+                    }),
+                };
+                let (sx, sy) = f.samples.offset(sample);
+                (column[lane], row[lane]) = (pixel as f32 + sx, j as f32 + sy);
+                self.paths.random[lane] = Random(f.hash.sample_rng(sample, Stream::Path));
                 job[lane] = next;
                 started |= 1 << lane;
                 next += 1;
             }
             if started != 0 {
-                let directions = Vec3x8::from_lanes(directions);
+                let directions = self.camera.directions(column, row);
                 let mask = mask_from_bits(started);
                 self.paths.start(mask, self.camera.eye, directions);
             }
