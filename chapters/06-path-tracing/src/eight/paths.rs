@@ -39,8 +39,12 @@ pub struct Paths {
     hits: f32x8,
     /// Segments and shadow rays traced on each path.
     pub rays: f32x8,
-    /// Set where the lane holds a path being traced.
+    /// Set where the lane holds a path being traced. An idle lane's
+    /// numbers are stale; every mask below leaves them unread.
     pub active: f32x8,
+    /// Each lane's own sample generator, `hash.sample_rng(sample,
+    /// Stream::Path)` as the scalar tracer seeds it, replaced when the lane
+    /// takes a new sample.
     pub random: [Random; LANES],
 }
 
