@@ -86,13 +86,14 @@ fn interleaved(c: &mut Criterion) {
 }
 
 /// Chapter 5 (its default, the lab's five rays per pixel) and chapter 6
-/// (16 paths per pixel, lab materials) in turn, several rounds, at
+/// (16 paths per pixel, lab materials), one path at a time and eight at a
+/// time (`--tracer scalar`, `eight`), in turn, several rounds, at
 /// 800 × 600. The two trace different rays, so what is compared is the
 /// cost of one: after each round it prints both chapters' Mrays/s (every
 /// segment and shadow ray counted), chapter 6's as a share of chapter 5's,
 /// and its paths per second. `cargo bench -p raylab-bench -- "path tracer"`
 fn interleaved_path_tracer(c: &mut Criterion) {
-    use ch06_path_tracing::{PathSettings, run};
+    use ch06_path_tracing::{PathSettings, Tracer, run};
     let (options, flags) =
         run::parse(["ch06-path-tracing", "--spp", "16"]).expect("the defaults parse");
     let six: PathSettings = run::settings(&options, &flags).expect("valid");
@@ -103,12 +104,21 @@ fn interleaved_path_tracer(c: &mut Criterion) {
     let (scene, camera) = (Scene::lab(), Camera::lab());
     let hidden = ProgressBar::hidden();
     let render_five = || step.render_image(&scene, &camera, &five, Maps::Skip, &hidden);
-    let render_six = || ch06_path_tracing::render(&scene, &camera, &six, &hidden);
+    let with = |tracer| PathSettings { tracer, ..six };
+    let (scalar, eight) = (with(Tracer::Scalar), with(Tracer::Eight));
+    let render_scalar = || ch06_path_tracing::render(&scene, &camera, &scalar, &hidden);
+    let render_eight = || ch06_path_tracing::render(&scene, &camera, &eight, &hidden);
     let rays_five = render_five().counts.total();
-    let first = render_six();
+    let first = render_scalar();
     let (rays_six, paths_six) = (first.rays, first.paths);
+    assert_eq!(
+        render_eight().rays,
+        rays_six,
+        "the two tracers trace the same rays"
+    );
     for round in 1..=3 {
-        let (tally_five, tally_six) = (Tally::default(), Tally::default());
+        let tallies = [Tally::default(), Tally::default(), Tally::default()];
+        let [tally_five, tally_scalar, tally_eight] = &tallies;
         let mut group = c.benchmark_group(format!("path tracer round {round}"));
         // One iteration of chapter 6 takes about a second: the same number
         // of them in every sample, not criterion's 1, 2, … 10.
@@ -118,20 +128,27 @@ fn interleaved_path_tracer(c: &mut Criterion) {
         group.throughput(Throughput::Elements(rays_five));
         group.bench_function("ch05-antialiasing", |b| tally_five.time(b, render_five));
         group.throughput(Throughput::Elements(rays_six));
-        group.bench_function("ch06-path-tracing 16 spp", |b| {
-            tally_six.time(b, render_six)
+        group.bench_function("ch06-path-tracing 16 spp --tracer scalar", |b| {
+            tally_scalar.time(b, render_scalar)
+        });
+        group.bench_function("ch06-path-tracing 16 spp --tracer eight", |b| {
+            tally_eight.time(b, render_eight)
         });
         group.finish();
-        let (mrays_five, mrays_six) = (
-            tally_five.per_second(rays_five) / 1e6,
-            tally_six.per_second(rays_six) / 1e6,
-        );
+        let mrays_five = tally_five.per_second(rays_five) / 1e6;
+        for (name, tally) in [("scalar", tally_scalar), ("eight", tally_eight)] {
+            let mrays_six = tally.per_second(rays_six) / 1e6;
+            println!(
+                "path tracer round {round}: ch05 {mrays_five:.1} Mrays/s; ch06 {name} \
+                 {mrays_six:.1} Mrays/s ({:.2} × ch05's), {:.2} M paths/s, {:.2} rays per path",
+                mrays_six / mrays_five,
+                tally.per_second(paths_six) / 1e6,
+                rays_six as f64 / paths_six as f64
+            );
+        }
         println!(
-            "path tracer round {round}: ch05 {mrays_five:.1} Mrays/s; ch06 {mrays_six:.1} Mrays/s \
-             ({:.2} × ch05's), {:.2} M paths/s, {:.2} rays per path",
-            mrays_six / mrays_five,
-            tally_six.per_second(paths_six) / 1e6,
-            rays_six as f64 / paths_six as f64
+            "path tracer round {round}: eight lanes {:.2} × the scalar tracer's paths/s",
+            tally_eight.per_second(paths_six) / tally_scalar.per_second(paths_six)
         );
     }
 }

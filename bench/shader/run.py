@@ -319,7 +319,7 @@ def own_time_ms(stdout):
 
 
 def compare(rounds, spp, seed):
-    """Time (a)–(g) alternately, round after round, so that the machine's
+    """Time (a)–(h) alternately, round after round, so that the machine's
     drift and the other engineers' builds fall on every variant alike."""
     for binary in ("ch05-antialiasing", "ch06-path-tracing", "ch07-eight-rays"):
         if not (RELEASE / binary).exists():
@@ -343,6 +343,9 @@ def compare(rounds, spp, seed):
         "d": (f"path shader frame, {spp} spp", None),
         "e": (f"ch06-path-tracing process, {spp} spp",
               [RELEASE / "ch06-path-tracing", *size, "--spp", str(spp), "--no-diagrams", "--out", tmp / "e"]),
+        "h": (f"ch06-path-tracing process, {spp} spp, --tracer scalar",
+              [RELEASE / "ch06-path-tracing", *size, "--spp", str(spp), "--tracer", "scalar", "--no-diagrams",
+               "--out", tmp / "h"]),
         "f": ("whitted shader whole process",
               [sys.executable, HERE / "run.py", "--shader", "whitted", "--whole", "--out", tmp / "f"]),
         "g": (f"path shader whole process, {spp} spp",
@@ -367,7 +370,7 @@ def compare(rounds, spp, seed):
             elapsed, processor, stdout = timed_process(command)
             times[key].append(elapsed)
             cpu[key].append(processor)
-            if key in "bce":
+            if key in "bceh":
                 # Our programs count their rays and say so.
                 rays[key] = number(r"([\d,]+) rays", stdout)
             # The program's own render time, without start-up and files
@@ -385,8 +388,8 @@ def compare(rounds, spp, seed):
     print("|---|---|---:|---:|---:|---:|---:|---:|")
     for key, (what, _) in variants.items():
         mrays = rays[key] / median[key] / 1e3
-        mpaths = f"{paths / median[key] / 1e3:.2f}" if key in "deg" else ""
-        own = f"{statistics.median(internal[key]):.0f}" if key in "bce" else ""
+        mpaths = f"{paths / median[key] / 1e3:.2f}" if key in "degh" else ""
+        own = f"{statistics.median(internal[key]):.0f}" if key in "bceh" else ""
         processor = statistics.median(cpu[key]) * 1e3
         print(f"| {key} | {what} | {median[key]:.0f} | {processor:.0f} | {rays[key]:,.0f} | {mrays:.1f} | {mpaths} | {own} |")
     print()
@@ -404,6 +407,8 @@ def compare(rounds, spp, seed):
           f"(ch06 {paths / median['e'] / 1e3:.2f} vs shader {paths / median['d'] / 1e3:.2f} M paths/s, "
           f"{rays['e'] / median['e'] / 1e3:.1f} vs {rays['d'] / median['d'] / 1e3:.1f} Mrays/s)")
     print(f"path shader whole process / ch06 process: {ratio('g', 'e'):.2f}x")
+    print(f"ch06 process --tracer scalar / eight (the default): {ratio('h', 'e'):.2f}x "
+          f"(processor time: {ratio('h', 'e', cpu):.2f}x; the renders alone: {ratio('h', 'e', internal):.2f}x)")
 
 
 def main():
@@ -412,7 +417,7 @@ def main():
     parser.add_argument("--whole", action="store_true",
                         help="one frame, no warm-up, quietly: for timing a whole shader process")
     parser.add_argument("--check", action="store_true", help="compare both shaders' images with ch05's and ch06's")
-    parser.add_argument("--compare", action="store_true", help="the interleaved speed table, (a) to (g)")
+    parser.add_argument("--compare", action="store_true", help="the interleaved speed table, (a) to (h)")
     parser.add_argument("--frames", type=int, default=10, help="timed frames after the warm-up [10]")
     parser.add_argument("--rounds", type=int, default=15, help="rounds of --compare [15]")
     parser.add_argument("--spp", type=int, default=16, help="paths per pixel of the path shader [16]")

@@ -114,18 +114,10 @@ impl Lab {
             (PathBuf::from(exercise.step), step),
         ];
         // The rest of the chapter's sources as they are (chapter 6's
-        // integrator has its render loop, sun and caustics beside it).
+        // integrator has its render loop, sun and caustics beside it, and
+        // its eight-lane tracer in a folder of its own).
         let src = chapter.join("src");
-        let mut names: Vec<_> = std::fs::read_dir(&src)
-            .map_err(|source| LabError::Read {
-                path: src.clone(),
-                source,
-            })?
-            .filter_map(|entry| entry.ok().map(|e| e.file_name()))
-            .filter(|name| name.to_string_lossy().ends_with(".rs"))
-            .collect();
-        names.sort();
-        for name in names {
+        for name in rust_files(&src, Path::new(""))? {
             let file = PathBuf::from("src").join(&name);
             if file != Path::new(exercise.step) {
                 files.push((file, read(&src.join(&name))?));
@@ -331,4 +323,27 @@ fn write_atomically(path: &Path, text: &str) -> Result<(), LabError> {
     let tmp = path.with_extension("toml.tmp");
     std::fs::write(&tmp, text).map_err(fail)?;
     std::fs::rename(&tmp, path).map_err(fail)
+}
+/// The `.rs` files under `dir/under`, as paths relative to `dir`, in
+/// sorted order, those of subfolders included.
+fn rust_files(dir: &Path, under: &Path) -> Result<Vec<PathBuf>, LabError> {
+    let folder = dir.join(under);
+    let mut entries: Vec<_> = std::fs::read_dir(&folder)
+        .map_err(|source| LabError::Read {
+            path: folder.clone(),
+            source,
+        })?
+        .filter_map(|entry| entry.ok())
+        .collect();
+    entries.sort_by_key(|e| e.file_name());
+    let mut files = Vec::new();
+    for entry in entries {
+        let name = under.join(entry.file_name());
+        if entry.file_type().is_ok_and(|t| t.is_dir()) {
+            files.extend(rust_files(dir, &name)?);
+        } else if name.to_string_lossy().ends_with(".rs") {
+            files.push(name);
+        }
+    }
+    Ok(files)
 }

@@ -160,7 +160,7 @@ impl PathTracer<'_> {
 
     /// [`PathTracer::choose_lobe`] with the path's random number, drawn
     /// only where there is a choice: a matte surface has one lobe.
-    fn draw_lobe(&self, d: Vec3, hit: &Hit, random: &mut Random) -> Lobe {
+    pub(crate) fn draw_lobe(&self, d: Vec3, hit: &Hit, random: &mut Random) -> Lobe {
         let m = hit.material;
         if m.reflection() + m.transmission() <= 0.0 {
             return Lobe::Diffuse;

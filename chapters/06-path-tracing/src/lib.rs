@@ -15,6 +15,7 @@
 //! ([`render`]) instead of a `raylab::Step`.
 
 pub mod caustics;
+pub mod eight;
 pub mod exr;
 pub mod integrator;
 pub mod lanes;
@@ -24,5 +25,5 @@ pub mod run;
 pub mod sun;
 
 pub use integrator::{Materials, PathTracer, Terms};
-pub use render::{PathRender, PathSettings, render};
+pub use render::{PathRender, PathSettings, Tracer, render};
 pub use run::{Flags, PROGRAM, main, run};

@@ -33,6 +33,19 @@ pub struct PathSettings {
     pub caustics: bool,
     /// With `--caustics`: photons sent towards each mirror or glass sphere.
     pub photons_per_sphere: u32,
+    /// `--tracer`: one path at a time, or eight (the same bytes).
+    pub tracer: Tracer,
+}
+
+/// `--tracer`: how the paths are traced. Both give the same image to the
+/// bit; [`PathTracer::trace`] is the definition, and eight lanes are faster.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum Tracer {
+    /// One path at a time (`PathTracer::trace`), the chapter's definition
+    Scalar,
+    /// Eight paths at a time in SIMD lanes, to the same bytes
+    #[default]
+    Eight,
 }
 
 /// A rendered image and everything measured along the way.
@@ -68,7 +81,7 @@ pub struct CausticStats {
 
 /// One pixel's sums over its samples.
 #[derive(Clone, Copy, Default)]
-struct PixelSums {
+pub(crate) struct PixelSums {
     mean: Vec3,
     variance: Vec3,
     terms: Terms,
@@ -76,11 +89,20 @@ struct PixelSums {
     non_finite: u64,
 }
 
+/// A pixel's running sums as its samples come in, in sample order (float
+/// sums depend on the order).
+#[derive(Clone, Copy, Default)]
+pub(crate) struct SampleSums {
+    sum: [f64; 3],
+    sum_sq: [f64; 3],
+    terms: Terms,
+    /// Every ray of the pixel's paths.
+    pub rays: u32,
+    non_finite: u64,
+}
+
 // ANCHOR: pixel
-/// Trace a pixel's paths and average them. The variance of the mean comes
-/// from the same samples: `(Σx² − N·x̄²) / (N − 1) / N`, summed in f64
-/// because a sun disc seen in the mirror is 37,000 times brighter than the
-/// sky and its squares would swamp an f32 sum.
+/// Trace a pixel's paths and average them.
 fn render_pixel(
     tracer: &PathTracer,
     camera: &Camera,
@@ -88,52 +110,66 @@ fn render_pixel(
     pixel: (u32, u32),
 ) -> PixelSums {
     let sampling = &settings.sampling;
-    let n = sampling.spp();
-    let (mut sum, mut sum_sq) = ([0f64; 3], [0f64; 3]);
-    let mut out = PixelSums::default();
-    let mut rays = 0u32;
+    let mut sums = SampleSums::default();
     // What the pixel's samples share, hashed once: where they go in the
     // pixel, and the pixel's half of every path's generator.
     let samples = sampling.pixel(pixel);
     let hash = PixelHash::new(sampling.seed(), pixel);
-    for sample in 0..n {
+    for sample in 0..sampling.spp() {
         let offset = samples.offset(sample);
         let ray = camera.ray(pixel.0, pixel.1, offset, settings.width, settings.height);
         let mut random = Random(hash.sample_rng(sample, Stream::Path));
-        let terms = tracer.trace(ray, &mut random, &mut rays);
+        let terms = tracer.trace(ray, &mut random, &mut sums.rays);
+        sums.add(&terms);
+    }
+    sums.finish(sampling.spp())
+}
+
+impl SampleSums {
+    /// One more sample's light; a NaN or infinite one is counted, not summed.
+    pub(crate) fn add(&mut self, terms: &Terms) {
         let radiance = terms.total();
         if !radiance.is_finite() {
-            out.non_finite += 1;
-            continue;
+            self.non_finite += 1;
+            return;
         }
-        out.terms += terms;
+        self.terms += *terms;
         for (c, x) in radiance.to_array().into_iter().enumerate() {
             let x = f64::from(x);
-            sum[c] += x;
-            sum_sq[c] += x * x;
+            self.sum[c] += x;
+            self.sum_sq[c] += x * x;
         }
     }
-    let n = f64::from(n);
-    let mean = sum.map(|s| s / n);
-    let variance = std::array::from_fn(|c| {
-        if n < 2.0 {
-            return 0.0;
+
+    /// The mean of `n` samples, and the variance of that mean from the
+    /// same samples: `(Σx² − N·x̄²) / (N − 1) / N`, summed in f64 because a
+    /// sun disc seen in the mirror is 37,000 times brighter than the sky
+    /// and its squares would swamp an f32 sum.
+    pub(crate) fn finish(self, n: u32) -> PixelSums {
+        let n = f64::from(n);
+        let mean = self.sum.map(|s| s / n);
+        let variance = std::array::from_fn(|c| {
+            if n < 2.0 {
+                return 0.0;
+            }
+            ((self.sum_sq[c] - n * mean[c] * mean[c]) / (n - 1.0)).max(0.0) / n
+        });
+        let to_vec = |a: [f64; 3]| Vec3::new(a[0] as f32, a[1] as f32, a[2] as f32);
+        let terms = self.terms.as_array().map(|t| t / n as f32);
+        PixelSums {
+            mean: to_vec(mean),
+            variance: to_vec(variance),
+            terms: Terms {
+                seen: terms[0],
+                sun_direct: terms[1],
+                sky_direct: terms[2],
+                indirect: terms[3],
+                caustics: terms[4],
+            },
+            rays: u64::from(self.rays),
+            non_finite: self.non_finite,
         }
-        ((sum_sq[c] - n * mean[c] * mean[c]) / (n - 1.0)).max(0.0) / n
-    });
-    let to_vec = |a: [f64; 3]| Vec3::new(a[0] as f32, a[1] as f32, a[2] as f32);
-    out.mean = to_vec(mean);
-    out.variance = to_vec(variance);
-    let terms = out.terms.as_array().map(|t| t / n as f32);
-    out.terms = Terms {
-        seen: terms[0],
-        sun_direct: terms[1],
-        sky_direct: terms[2],
-        indirect: terms[3],
-        caustics: terms[4],
-    };
-    out.rays = u64::from(rays);
-    out
+    }
 }
 // ANCHOR_END: pixel
 
@@ -176,17 +212,20 @@ pub fn render(
     // Every pixel on every core, a row at least per task; collected by the
     // workers straight into place, so no thread but theirs touches the
     // buffer first.
-    let pixels: Vec<PixelSums> = (0..width * height)
-        .into_par_iter()
-        .with_min_len(width)
-        .map(|k| {
-            let (i, j) = (k % width, k / width);
-            if i + 1 == width {
-                progress.inc(1);
-            }
-            render_pixel(&tracer, camera, settings, (i as u32, j as u32))
-        })
-        .collect();
+    let pixels: Vec<PixelSums> = match settings.tracer {
+        Tracer::Eight => crate::eight::render_pixels(&tracer, camera, settings, progress),
+        Tracer::Scalar => (0..width * height)
+            .into_par_iter()
+            .with_min_len(width)
+            .map(|k| {
+                let (i, j) = (k % width, k / width);
+                if i + 1 == width {
+                    progress.inc(1);
+                }
+                render_pixel(&tracer, camera, settings, (i as u32, j as u32))
+            })
+            .collect(),
+    };
     // ANCHOR_END: rows
     let elapsed = eye_start.elapsed();
     // Each output image is gathered on every core: a fresh 800 × 600 image
@@ -244,6 +283,9 @@ impl fmt::Display for PathSettings {
         }
         if self.caustics {
             write!(f, ", caustics")?;
+        }
+        if self.tracer == Tracer::Scalar {
+            write!(f, ", scalar tracer")?;
         }
         Ok(())
     }

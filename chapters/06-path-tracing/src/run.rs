@@ -13,7 +13,7 @@ use rayon::prelude::*;
 
 use crate::exr::save_exr;
 use crate::integrator::{Materials, Terms};
-use crate::render::{PathRender, PathSettings, render};
+use crate::render::{PathRender, PathSettings, Tracer, render};
 use crate::sun::MAX_SUN_SIZE;
 use raylab::sampling::{Pattern, Sampling};
 
@@ -40,6 +40,10 @@ pub struct Flags {
     /// Add the caustics: light traced from the sun through mirror and glass onto the ground
     #[arg(long)]
     pub caustics: bool,
+
+    /// How the paths are traced: one at a time or eight at a time, to the same bytes
+    #[arg(long, value_enum, default_value_t = Tracer::Eight)]
+    pub tracer: Tracer,
 }
 
 fn parse_sun_size(text: &str) -> Result<f32, String> {
@@ -115,6 +119,7 @@ pub fn settings(options: &Options, flags: &Flags) -> Result<PathSettings, CliErr
         sun_size: flags.sun_size,
         caustics: flags.caustics,
         photons_per_sphere: crate::caustics::PHOTONS_PER_SPHERE,
+        tracer: flags.tracer,
     })
 }
 

@@ -48,6 +48,12 @@ impl Sunlight {
         }
     }
 
+    /// `1 − cos(D/2)`: the disc's radius as [`Sunlight::radiance_along`]
+    /// compares it (0 for a point).
+    pub fn one_minus_cos(&self) -> f32 {
+        self.one_minus_cos
+    }
+
     /// Whether the sun is a single direction.
     pub fn is_point(&self) -> bool {
         self.one_minus_cos == 0.0

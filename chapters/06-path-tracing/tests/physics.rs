@@ -3,7 +3,7 @@
 use ch06_path_tracing::lanes::SceneLanes;
 use ch06_path_tracing::random::Random;
 use ch06_path_tracing::sun::Sunlight;
-use ch06_path_tracing::{Materials, PathRender, PathSettings, PathTracer, Terms, render};
+use ch06_path_tracing::{Materials, PathRender, PathSettings, PathTracer, Terms, Tracer, render};
 use raylab::indicatif::ProgressBar;
 use raylab::light::{Sky, Sun};
 use raylab::plane::{Checker, Plane};
@@ -23,6 +23,7 @@ fn settings(width: u32, height: u32, spp: u32, seed: u64) -> PathSettings {
         sun_size: None,
         caustics: false,
         photons_per_sphere: 50_000,
+        tracer: Tracer::default(),
     }
 }
 

@@ -1,0 +1,151 @@
+//! Chapter 6's path tracer eight paths at a time, to the same bytes.
+//!
+//! [`PathTracer::trace`] follows one path; here eight paths are in flight,
+//! one per lane of an `f32x8`, and every bounce is made for all eight at
+//! once: the camera rays, the hits against the ground and the spheres, the
+//! hit records, the sky, the sun's shadow rays, the new directions, the
+//! throughputs and the terms. Only what is rare, or the learner's, is done
+//! lane by lane: the choice of lobe where a material has one (the
+//! learner's `choose_lobe`), the disc sun's sample (`--sun-size`) and the
+//! caustic lookup (`--caustics`).
+//!
+//! The bytes are the scalar tracer's because each lane does the scalar
+//! code's operations in its order (the workspace builds without FMA), and
+//! draws from its sample's own generator exactly where the scalar code
+//! draws. When a path ends, its lane takes the row's next sample at once
+//! (path regeneration), and [`window`] puts the finished samples back in
+//! sample order before they are summed.
+
+mod camera;
+mod paths;
+mod scene;
+mod terms;
+mod vec3x8;
+mod window;
+
+use raylab::Camera;
+use raylab::indicatif::ProgressBar;
+use raylab::sampling::{PixelHash, PixelSamples, Stream};
+use rayon::prelude::*;
+
+use crate::integrator::PathTracer;
+use crate::random::Random;
+use crate::render::{PathSettings, PixelSums};
+use camera::CameraX8;
+use paths::Paths;
+use scene::SceneX8;
+use vec3x8::{LANES, lanes_of, mask_from_bits};
+use window::Window;
+
+/// Every pixel's sums, one image row per task, ticking `progress` per row.
+pub(crate) fn render_pixels(
+    tracer: &PathTracer,
+    camera: &Camera,
+    settings: &PathSettings,
+    progress: &ProgressBar,
+) -> Vec<PixelSums> {
+    let (width, height) = (settings.width as usize, settings.height as usize);
+    let scene = SceneX8::new(tracer.scene);
+    let camera = CameraX8::new(camera, settings.width, settings.height);
+    // The buffer is first written by the workers (each page cleared by
+    // the core that fills it), then each row is rendered into its place.
+    let mut pixels: Vec<PixelSums> = (0..width * height)
+        .into_par_iter()
+        .with_min_len(width)
+        .map(|_| PixelSums::default())
+        .collect();
+    pixels.par_chunks_mut(width).enumerate().for_each_init(
+        || (Paths::default(), Window::default()),
+        |(paths, window), (j, row)| {
+            let mut rows = Rows {
+                tracer,
+                scene: &scene,
+                camera: &camera,
+                settings,
+                paths,
+                window,
+            };
+            rows.render_row(j as u32, row);
+            progress.inc(1);
+        },
+    );
+    pixels
+}
+
+/// What one task needs to trace rows: the scene and camera in lanes, and
+/// its eight paths and window of finished samples, made once per task.
+struct Rows<'a, 's> {
+    tracer: &'a PathTracer<'s>,
+    scene: &'a SceneX8<'s>,
+    camera: &'a CameraX8,
+    settings: &'a PathSettings,
+    paths: &'a mut Paths,
+    window: &'a mut Window,
+}
+
+/// The pixel whose samples are being handed out, with what they share.
+struct Feeding {
+    pixel: usize,
+    samples: PixelSamples,
+    hash: PixelHash,
+}
+
+impl Rows<'_, '_> {
+    // ANCHOR: row
+    /// Row `j`'s pixels into `out`: sample `q` of the row is pixel
+    /// `q / spp`'s sample `q % spp`; the lanes take them in that order, a
+    /// lane taking the next one as soon as its path ends.
+    fn render_row(&mut self, j: u32, out: &mut [PixelSums]) {
+        let sampling = &self.settings.sampling;
+        let spp = sampling.spp() as usize;
+        let total = out.len() * spp;
+        let mut job = [0usize; LANES];
+        let mut next = 0;
+        let mut feeding: Option<Feeding> = None;
+        self.window.clear();
+        while self.window.summed() < total {
+            // Every idle lane starts the next sample, while there is one
+            // and it fits in the window.
+            let idle = !self.paths.active.move_mask() as u32 & 0xff;
+            let (mut column, mut row) = ([0f32; LANES], [0f32; LANES]);
+            let mut started = 0;
+            for lane in lanes_of(idle) {
+                if next == total || !self.window.has_room_for(next) {
+                    break;
+                }
+                let (pixel, sample) = (next / spp, (next % spp) as u32);
+                let f = match feeding {
+                    Some(ref f) if f.pixel == pixel => f,
+                    _ => feeding.insert(Feeding {
+                        pixel,
+                        samples: sampling.pixel((pixel as u32, j)),
+                        hash: PixelHash::new(sampling.seed(), (pixel as u32, j)),
+                    }),
+                };
+                let (sx, sy) = f.samples.offset(sample);
+                (column[lane], row[lane]) = (pixel as f32 + sx, j as f32 + sy);
+                self.paths.random[lane] = Random(f.hash.sample_rng(sample, Stream::Path));
+                job[lane] = next;
+                started |= 1 << lane;
+                next += 1;
+            }
+            if started != 0 {
+                let directions = self.camera.directions(column, row);
+                let mask = mask_from_bits(started);
+                self.paths.start(mask, self.camera.eye, directions);
+            }
+            // One bounce of every path in flight; the ones that ended hand
+            // their light to the window, which sums what is complete.
+            let ended = self.paths.bounce(self.tracer, self.scene).move_mask() as u32;
+            if ended != 0 {
+                let rays = self.paths.rays.as_array_ref();
+                for lane in lanes_of(ended) {
+                    let terms = self.paths.terms.lane(lane);
+                    self.window.finish(job[lane], terms, rays[lane] as u32);
+                }
+                self.window.sum_in_order(spp, out);
+            }
+        }
+    }
+    // ANCHOR_END: row
+}

@@ -1,0 +1,385 @@
+//! Eight paths in flight, one per lane, and one bounce of all of them at
+//! once: [`PathTracer::trace`]'s loop body, eight wide.
+//!
+//! Each lane is a path at its own depth (a finished lane takes a new path
+//! at once), so the per-path numbers are lanes too: the depth, the count
+//! of diffuse bounces `k`, whether the last vertex was diffuse. They are
+//! small whole numbers, kept in `f32` lanes (exact below 2²⁴) so that
+//! they compare and blend with the same masks as everything else.
+//!
+//! Every lane has its own scalar generator, the one its sample would have
+//! in the scalar tracer, and draws from it exactly where the scalar code
+//! draws: a lane that does not draw at some point (a matte surface has no
+//! lobe to choose) leaves its generator alone, so each consumes the scalar
+//! sequence and the paths are the same to the bit.
+
+use std::f32::consts::FRAC_1_PI;
+
+use raylab::Vec3;
+use wide::{CmpGt, CmpLe, CmpLt, CmpNe, f32x8};
+
+use super::scene::{Hits, SceneX8, Surfaces};
+use super::terms::TermsX8;
+use super::vec3x8::{LANES, Vec3x8, lanes_of, mask_from_bits, negate};
+use crate::integrator::{Lobe, PathTracer};
+use crate::random::Random;
+
+/// Eight paths between two bounces.
+pub struct Paths {
+    pub origin: Vec3x8,
+    pub direction: Vec3x8,
+    /// The share of the light found further along that reaches the eye.
+    throughput: Vec3x8,
+    pub terms: TermsX8,
+    /// Diffuse scatterings so far (`k`).
+    diffuse_bounces: f32x8,
+    /// Set where the last vertex was diffuse (the sun was counted there).
+    after_diffuse: f32x8,
+    /// Surface hits asked for so far, this one included (scalar `hits`).
+    hits: f32x8,
+    /// Segments and shadow rays traced on each path.
+    pub rays: f32x8,
+    /// Set where the lane holds a path being traced. An idle lane's
+    /// numbers are stale; every mask below leaves them unread.
+    pub active: f32x8,
+    /// Each lane's own sample generator, `hash.sample_rng(sample,
+    /// Stream::Path)` as the scalar tracer seeds it, replaced when the lane
+    /// takes a new sample.
+    pub random: [Random; LANES],
+}
+
+/// Eight idle lanes (each takes a path with [`Paths::start`]).
+impl Default for Paths {
+    fn default() -> Paths {
+        Paths {
+            origin: Vec3x8::ZERO,
+            direction: Vec3x8::ONE,
+            throughput: Vec3x8::ONE,
+            terms: TermsX8::ZERO,
+            diffuse_bounces: f32x8::ZERO,
+            after_diffuse: f32x8::ZERO,
+            hits: f32x8::ZERO,
+            rays: f32x8::ZERO,
+            active: f32x8::ZERO,
+            random: std::array::from_fn(|_| {
+                Random(raylab::sampling::sample_rng(
+                    0,
+                    (0, 0),
+                    0,
+                    raylab::sampling::Stream::Path,
+                ))
+            }),
+        }
+    }
+}
+
+impl Paths {
+    /// New paths in the lanes of `mask`, from the eye along `origin`,
+    /// `direction`, as the start of `PathTracer::trace` sets them up (their
+    /// generators are set by the caller).
+    #[inline]
+    pub fn start(&mut self, mask: f32x8, origin: Vec3x8, direction: Vec3x8) {
+        let zero = f32x8::ZERO;
+        self.origin = Vec3x8::select(mask, origin, self.origin);
+        self.direction = Vec3x8::select(mask, direction, self.direction);
+        self.throughput = Vec3x8::select(mask, Vec3x8::ONE, self.throughput);
+        self.terms.clear(mask);
+        self.diffuse_bounces = mask.blend(zero, self.diffuse_bounces);
+        self.after_diffuse = mask.blend(zero, self.after_diffuse);
+        self.hits = mask.blend(zero, self.hits);
+        self.rays = mask.blend(zero, self.rays);
+        self.active |= mask;
+    }
+
+    // ANCHOR: bounce
+    /// One segment of every active path: where it goes, what it finds, and
+    /// where it goes next. Returns the lanes whose path ended here (they
+    /// are no longer active; their terms and rays are final).
+    pub fn bounce(&mut self, tracer: &PathTracer, scene: &SceneX8) -> f32x8 {
+        let active = self.active;
+        let one = f32x8::ONE;
+        self.hits = active.blend(self.hits + one, self.hits);
+        self.rays = active.blend(self.rays + one, self.rays);
+        let (o, d) = (self.origin, self.direction);
+        let hits = scene.nearest(o, d);
+        // Mask: one hit more than the depth allows, where only whether the
+        // path escapes matters (the scalar code asks `any_hit` there).
+        let last = self.hits.cmp_gt(f32x8::splat(tracer.max_depth as f32));
+        let escaped = active & !last.blend(hits.any, hits.nearest);
+        if escaped.any() {
+            self.escape(tracer, escaped);
+        }
+        let shading = active & !last & hits.nearest;
+        if shading.any() {
+            let surfaces = scene.surfaces(o, d, &hits);
+            self.scatter(tracer, scene, &hits, &surfaces, shading);
+        }
+        // Every path that did not go on to a new segment has ended.
+        let ended = active & !shading;
+        self.active = active & shading;
+        ended
+    }
+    // ANCHOR_END: bounce
+
+    /// The light of the paths in `escaped`, which left the scene: the sky,
+    /// and the sun's disc where no diffuse vertex has counted it already.
+    fn escape(&mut self, tracer: &PathTracer, escaped: f32x8) {
+        let d = self.direction;
+        let sky = sky_radiance(tracer, d);
+        let k = self.diffuse_bounces;
+        self.terms.add_sky(escaped, k, self.throughput * sky);
+        let sun = &tracer.sun;
+        if sun.is_point() {
+            return; // a ray never hits a single direction
+        }
+        // Mask: the sun was counted elsewhere, by the shadow ray of the
+        // diffuse vertex just before, or by the photons (with --caustics)
+        // after any diffuse vertex.
+        let mut counted_elsewhere = self.after_diffuse;
+        if tracer.caustics.is_some() {
+            counted_elsewhere |= k.cmp_gt(f32x8::ZERO);
+        }
+        // Mask: the direction is inside the disc, |d − L|² ≤ 2 (1 − cos(D/2)).
+        let off = d - Vec3x8::splat(sun.direction);
+        let limit = 2.0 * sun.one_minus_cos();
+        let inside = off.dot(off).cmp_le(f32x8::splat(limit));
+        let radiance = sun.radiance();
+        if radiance > 0.0 {
+            let seen = escaped & !counted_elsewhere & inside;
+            self.terms.add_sun(seen, k, self.throughput * radiance);
+        }
+    }
+
+    /// The paths in `shading` met a surface: choose each one's lobe, add the
+    /// sun and the caustics at diffuse vertices, and set up the next segment.
+    fn scatter(
+        &mut self,
+        tracer: &PathTracer,
+        scene: &SceneX8,
+        hits: &Hits,
+        s: &Surfaces,
+        shading: f32x8,
+    ) {
+        let d = self.direction;
+        let nf = s.facing_normal;
+        // The lobe, per lane and with the learner's `choose_lobe`, only
+        // where there is a choice: a matte surface draws no number for it.
+        let (mut mirror, mut refraction) = (0u32, 0u32);
+        for lane in lanes_of((shading & s.chooses).move_mask() as u32) {
+            let hit = scene.hit(hits, s, lane);
+            match tracer.draw_lobe(d.lane(lane), &hit, &mut self.random[lane]) {
+                Lobe::Mirror => mirror |= 1 << lane,
+                Lobe::Refraction => refraction |= 1 << lane,
+                Lobe::Diffuse => {}
+            }
+        }
+        let (mirror, refraction) = (mask_from_bits(mirror), mask_from_bits(refraction));
+        let diffuse = shading & !(mirror | refraction);
+        let specular = shading & (mirror | refraction);
+        if diffuse.any() {
+            self.diffuse(tracer, scene, s, diffuse);
+        }
+        if specular.any() {
+            // Mirror: reflect(d, nf) = d − 2 (d·nf) nf.
+            let reflected = d - nf.scale(f32x8::splat(2.0) * d.dot(nf));
+            let mut direction = reflected;
+            if refraction.any() {
+                let eta = s.entering.blend(f32x8::ONE / s.ior, s.ior);
+                let (refracted, total) = refract(d, nf, eta);
+                // Mask: total internal reflection sends the light along
+                // the mirror instead.
+                let through = refraction & !total;
+                direction = Vec3x8::select(through, refracted, reflected);
+            }
+            let direction = direction.normalize();
+            let origin = s.point + direction * tracer.epsilon;
+            self.origin = Vec3x8::select(specular, origin, self.origin);
+            self.direction = Vec3x8::select(specular, direction, self.direction);
+        }
+        self.after_diffuse = shading.blend(diffuse, self.after_diffuse);
+    }
+
+    /// The diffuse vertices (`diffuse`): the sun by next-event estimation,
+    /// the caustics on the ground, and a cosine-distributed new direction.
+    fn diffuse(&mut self, tracer: &PathTracer, scene: &SceneX8, s: &Surfaces, diffuse: f32x8) {
+        let sun = &tracer.sun;
+        let nf = s.facing_normal;
+        let k = self.diffuse_bounces;
+        // A point sun is one direction; a disc draws two numbers per lane.
+        let to_sun = if sun.is_point() {
+            Vec3x8::splat(sun.direction)
+        } else {
+            let mut towards = [sun.direction; LANES];
+            for lane in lanes_of(diffuse.move_mask() as u32) {
+                towards[lane] = sun.draw(&mut self.random[lane]);
+            }
+            Vec3x8::from_lanes(towards)
+        };
+        let cos = nf.dot(to_sun);
+        // Mask: the surface faces the sun, so a shadow ray is traced.
+        let lit = diffuse & cos.cmp_gt(f32x8::ZERO);
+        if lit.any() {
+            self.rays = lit.blend(self.rays + f32x8::ONE, self.rays);
+            let origin = s.point + to_sun * tracer.epsilon;
+            let open = lit & !scene.any(origin, to_sun, lit);
+            let light = (s.albedo * FRAC_1_PI * sun.irradiance).scale(cos);
+            self.terms
+                .add_sun(open, k + f32x8::ONE, self.throughput * light);
+        }
+        if let Some(map) = tracer.caustics {
+            self.caustics(tracer, map, s, diffuse & s.on_ground);
+        }
+        self.throughput = Vec3x8::select(diffuse, self.throughput * s.albedo, self.throughput);
+        self.diffuse_bounces = diffuse.blend(k + f32x8::ONE, k);
+        let direction = self.cosine_direction(nf, diffuse);
+        let origin = s.point + nf * tracer.epsilon;
+        self.origin = Vec3x8::select(diffuse, origin, self.origin);
+        self.direction = Vec3x8::select(diffuse, direction, self.direction);
+    }
+
+    /// The caustic light the photons left at the ground points of `ground`
+    /// (looked up per lane: a scan of the photons near each point).
+    fn caustics(
+        &mut self,
+        tracer: &PathTracer,
+        map: &crate::caustics::CausticMap,
+        s: &Surfaces,
+        ground: f32x8,
+    ) {
+        let bits = ground.move_mask() as u32;
+        if bits == 0 {
+            return;
+        }
+        let points = s.point.to_lanes();
+        let hits = self.hits.to_array();
+        let mut irradiance = [Vec3::ZERO; LANES];
+        for lane in lanes_of(bits) {
+            let left = tracer.max_depth - hits[lane] as u32;
+            irradiance[lane] = map.irradiance(points[lane], left);
+        }
+        let light = (self.throughput * s.albedo * FRAC_1_PI) * Vec3x8::from_lanes(irradiance);
+        self.terms.add_caustics(ground, light);
+    }
+
+    // ANCHOR: cosine
+    /// [`crate::integrator::cosine_direction`] in the lanes of `mask`: the
+    /// rejection loop repeats while any lane's point is still outside the
+    /// disc, and only those lanes draw again, so each lane draws exactly
+    /// the numbers its scalar path draws.
+    fn cosine_direction(&mut self, n: Vec3x8, mask: f32x8) -> Vec3x8 {
+        let (mut x, mut y) = ([0f32; LANES], [0f32; LANES]);
+        let mut trying = mask.move_mask() as u32;
+        let mut r2 = f32x8::ZERO;
+        while trying != 0 {
+            for lane in lanes_of(trying) {
+                let random = &mut self.random[lane];
+                x[lane] = 2.0 * random.uniform() - 1.0;
+                y[lane] = 2.0 * random.uniform() - 1.0;
+            }
+            let (xs, ys) = (f32x8::new(x), f32x8::new(y));
+            r2 = xs * xs + ys * ys;
+            trying &= !(r2.cmp_lt(f32x8::ONE).move_mask() as u32);
+        }
+        let (t, b) = any_orthonormal_pair(n);
+        let z = (f32x8::ONE - r2).max(f32x8::ZERO).sqrt();
+        t.scale(f32x8::new(x)) + b.scale(f32x8::new(y)) + n.scale(z)
+    }
+    // ANCHOR_END: cosine
+}
+
+/// The sky's radiance along eight unit directions, as `Sky::radiance`.
+fn sky_radiance(tracer: &PathTracer, d: Vec3x8) -> Vec3x8 {
+    let sky = &tracer.scene.sky;
+    // `f32::clamp(0, 1)` exactly: a NaN stays NaN, and −0 stays −0.
+    let y = d.y.cmp_lt(f32x8::ZERO).blend(f32x8::ZERO, d.y);
+    let y = d.y.cmp_gt(f32x8::ONE).blend(f32x8::ONE, y);
+    let t = y.sqrt();
+    Vec3x8::splat(sky.horizon).scale(f32x8::ONE - t) + Vec3x8::splat(sky.zenith).scale(t)
+}
+
+/// `refract(i, n, eta)` in every lane, and the mask of the lanes where
+/// there is no refracted direction (total internal reflection).
+fn refract(i: Vec3x8, n: Vec3x8, eta: f32x8) -> (Vec3x8, f32x8) {
+    let cos_i = n.dot(i);
+    let k = f32x8::ONE - eta * eta * (f32x8::ONE - cos_i * cos_i);
+    let total = k.cmp_lt(f32x8::ZERO);
+    // The lanes with k < 0 take the root of a negative number (NaN); their
+    // mask `total` sends them along the mirror instead.
+    let refracted = i.scale(eta) - n.scale(eta * cos_i + k.sqrt());
+    (refracted, total)
+}
+
+/// glam's `any_orthonormal_pair` in every lane (Duff et al.'s basis):
+/// `signum(z)` is ±1 by the sign bit, and NaN where `z` is.
+fn any_orthonormal_pair(n: Vec3x8) -> (Vec3x8, Vec3x8) {
+    let sign_bit = n.z & f32x8::splat(-0.0);
+    let sign = f32x8::ONE | sign_bit;
+    let sign = n.z.cmp_ne(n.z).blend(n.z, sign);
+    let a = f32x8::splat(-1.0) / (sign + n.z);
+    let b = n.x * n.y * a;
+    (
+        Vec3x8 {
+            x: f32x8::ONE + sign * n.x * n.x * a,
+            y: sign * b,
+            z: negate(sign) * n.x,
+        },
+        Vec3x8 {
+            x: b,
+            y: sign + n.y * n.y * a,
+            z: negate(n.y),
+        },
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_orthonormal_pair_in_lanes_is_glams_to_the_bit() {
+        let ns: [Vec3; LANES] = [
+            Vec3::Y,
+            Vec3::NEG_Z,
+            Vec3::Z,
+            Vec3::new(0.3, 0.9, -0.2).normalize(),
+            Vec3::new(-0.6, 0.1, 0.7).normalize(),
+            Vec3::new(0.0, 0.0, -0.0),
+            Vec3::new(0.5, -0.5, 0.0).normalize(),
+            Vec3::new(-0.1, -0.2, -0.97).normalize(),
+        ];
+        let (t, b) = any_orthonormal_pair(Vec3x8::from_lanes(ns));
+        let (t, b) = (t.to_lanes(), b.to_lanes());
+        for (l, n) in ns.iter().enumerate() {
+            let (tt, bb) = n.any_orthonormal_pair();
+            assert_eq!(
+                t[l].to_array().map(f32::to_bits),
+                tt.to_array().map(f32::to_bits)
+            );
+            assert_eq!(
+                b[l].to_array().map(f32::to_bits),
+                bb.to_array().map(f32::to_bits)
+            );
+        }
+    }
+
+    #[test]
+    fn refraction_in_lanes_is_refract_to_the_bit_and_finds_total_internal_reflection() {
+        let i: [Vec3; LANES] = std::array::from_fn(|l| {
+            Vec3::new(0.1 + 0.12 * l as f32, -1.0, 0.05 * l as f32).normalize()
+        });
+        let n = Vec3::Y;
+        for eta in [1.0 / 1.5, 1.5] {
+            let (r, total) = refract(Vec3x8::from_lanes(i), Vec3x8::splat(n), f32x8::splat(eta));
+            let (r, total) = (r.to_lanes(), total.to_array());
+            for l in 0..LANES {
+                match raylab::optics::refract(i[l], n, eta) {
+                    Some(expected) => {
+                        assert_eq!(total[l], 0.0);
+                        assert_eq!(r[l], expected);
+                    }
+                    None => assert_ne!(total[l], 0.0),
+                }
+            }
+        }
+    }
+}
