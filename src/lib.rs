@@ -2,7 +2,8 @@
 //!
 //! Everything the workbook's steps share: vectors (glam), rays, the lab's
 //! shapes and scene, the pinhole camera, the ray stack and its tracing
-//! loop, sampling, rendering on every core, and image encoding. A chapter
+//! loop, sampling, rendering on every core, image encoding, and eight
+//! vectors side by side for the eight-lane tracers. A chapter
 //! crate supplies one thing, a [`Step`]: what happens when a ray hits a
 //! surface.
 //!
@@ -13,6 +14,7 @@
 //! `../shared/LAB.md` in the workbook defines every formula used here.
 
 pub mod camera;
+pub mod lanes;
 pub mod light;
 pub mod linear_image;
 pub mod material;

@@ -13,6 +13,7 @@ use wide::{CmpEq, CmpGe, CmpGt, CmpLt, CmpNe, f32x8};
 
 use crate::like::Features;
 use crate::soa::Vec3x8;
+use raylab::lanes::{plane_hits, sphere_hits};
 
 /// Object numbers in a lane: nothing hit, the ground, sphere `k` is `k + 1`.
 pub const NOTHING: f32 = -1.0;
@@ -98,47 +99,15 @@ impl SceneX8 {
         }
     }
 
-    // ANCHOR: plane
     /// The plane's `t` in every lane, and a mask of the lanes it counts in.
     fn plane(&self, o: Vec3x8, d: Vec3x8) -> (f32x8, f32x8) {
-        let n = Vec3x8::splat(self.plane_normal);
-        let denom = d.dot(n);
-        let t = (self.plane_point - o).dot(n) / denom;
-        // Mask 1: a ray parallel to the plane never meets it. Its lane
-        // divided by (almost) zero above; the mask throws that away.
-        let crosses = !denom.abs().cmp_lt(f32x8::splat(1e-8));
-        // Mask 2: only crossings in front of the ray count.
-        (t, crosses & t.cmp_gt(f32x8::ZERO))
+        plane_hits(self.plane_point, Vec3x8::splat(self.plane_normal), o, d)
     }
-    // ANCHOR_END: plane
 
-    // ANCHOR: sphere
     /// A sphere's nearest `t > 0` in every lane, and the lanes that hit it.
     fn sphere(s: &SphereX8, o: Vec3x8, d: Vec3x8) -> (f32x8, f32x8) {
-        let oc = o - s.centre;
-        let b = oc.dot(d);
-        let q = oc.dot(oc) - s.radius_squared;
-        let disc = b * b - q;
-        let meets = !disc.cmp_lt(f32x8::ZERO);
-        // Divergence: most spheres are missed by all eight rays of a
-        // group, and then the square root (the slow part) is skipped.
-        if meets.none() {
-            return (f32x8::ZERO, meets);
-        }
-        // A lane whose line misses the sphere takes the square root of a
-        // negative number (NaN); its mask is clear, so nothing reads it.
-        let root = disc.sqrt();
-        let minus_b = crate::soa::negate(b);
-        let t0 = minus_b - root;
-        let t1 = minus_b + root;
-        // Mask: where the ray enters in front of its origin, t0 counts;
-        // where the origin is inside the sphere (t0 ≤ 0), the exit t1.
-        let front = t0.cmp_gt(f32x8::ZERO);
-        let t = front.blend(t0, t1);
-        let hit = meets & (front | t1.cmp_gt(f32x8::ZERO));
-        (t, hit)
+        sphere_hits(s.centre, s.radius_squared, o, d)
     }
-    // ANCHOR_END: sphere
 
     // ANCHOR: nearest
     /// The nearest hit of eight rays: the plane, then every sphere in

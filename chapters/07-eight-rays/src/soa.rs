@@ -7,119 +7,13 @@
 //! waves a ray is kept as one record of eight numbers, and a transpose
 //! turns eight records into eight such registers and back.
 
-use std::ops::{Add, Neg, Sub};
-
-use raylab::{RayKind, Vec3};
+use raylab::RayKind;
+use raylab::Vec3;
 use wide::f32x8;
 
-/// How many rays are traced at once: one AVX register of `f32`.
-pub const LANES: usize = 8;
-
-/// Eight vectors: the x of every lane in `x`, and so on.
-#[derive(Clone, Copy, Debug)]
-pub struct Vec3x8 {
-    pub x: f32x8,
-    pub y: f32x8,
-    pub z: f32x8,
-}
-
-impl Vec3x8 {
-    /// The same vector in every lane.
-    pub fn splat(v: Vec3) -> Self {
-        Vec3x8 {
-            x: f32x8::splat(v.x),
-            y: f32x8::splat(v.y),
-            z: f32x8::splat(v.z),
-        }
-    }
-
-    // ANCHOR: dot
-    /// Eight dot products. Summed as glam sums them, `(x·x' + y·y') + z·z'`:
-    /// float addition is not associative, and the bytes must match.
-    pub fn dot(self, o: Vec3x8) -> f32x8 {
-        self.x * o.x + self.y * o.y + self.z * o.z
-    }
-
-    /// Eight unit vectors, made as glam's `normalize` makes one: each
-    /// component divided by the square root of the dot product (not
-    /// multiplied by its reciprocal, which rounds differently).
-    pub fn normalize(self) -> Vec3x8 {
-        let length = self.dot(self).sqrt();
-        Vec3x8 {
-            x: self.x / length,
-            y: self.y / length,
-            z: self.z / length,
-        }
-    }
-    // ANCHOR_END: dot
-
-    /// Each lane's vector times that lane's number.
-    pub fn scale(self, s: f32x8) -> Vec3x8 {
-        Vec3x8 {
-            x: s * self.x,
-            y: s * self.y,
-            z: s * self.z,
-        }
-    }
-
-    /// Lane by lane, `a` where `mask` is set and `b` elsewhere.
-    pub fn select(mask: f32x8, a: Vec3x8, b: Vec3x8) -> Vec3x8 {
-        Vec3x8 {
-            x: mask.blend(a.x, b.x),
-            y: mask.blend(a.y, b.y),
-            z: mask.blend(a.z, b.z),
-        }
-    }
-
-    /// Lane `lane` as a glam vector.
-    pub fn lane(&self, lane: usize) -> Vec3 {
-        Vec3::new(
-            self.x.as_array_ref()[lane],
-            self.y.as_array_ref()[lane],
-            self.z.as_array_ref()[lane],
-        )
-    }
-}
-
-/// `-x`, exactly: only the sign bit changes.
-pub fn negate(x: f32x8) -> f32x8 {
-    x ^ f32x8::splat(-0.0)
-}
-
-/// `-v` in every lane: the sign bit flipped, as `-v` does in scalar code
-/// (`wide`'s own negation is `0 − v`, which turns −0 into +0).
-impl Neg for Vec3x8 {
-    type Output = Vec3x8;
-    fn neg(self) -> Vec3x8 {
-        Vec3x8 {
-            x: negate(self.x),
-            y: negate(self.y),
-            z: negate(self.z),
-        }
-    }
-}
-
-impl Add for Vec3x8 {
-    type Output = Vec3x8;
-    fn add(self, o: Vec3x8) -> Vec3x8 {
-        Vec3x8 {
-            x: self.x + o.x,
-            y: self.y + o.y,
-            z: self.z + o.z,
-        }
-    }
-}
-
-impl Sub for Vec3x8 {
-    type Output = Vec3x8;
-    fn sub(self, o: Vec3x8) -> Vec3x8 {
-        Vec3x8 {
-            x: self.x - o.x,
-            y: self.y - o.y,
-            z: self.z - o.z,
-        }
-    }
-}
+/// The core's eight vectors side by side (`raylab::lanes`), which chapter
+/// 6's eight lanes use too.
+pub use raylab::lanes::{LANES, Vec3x8, negate};
 
 // ANCHOR: rays
 /// A wave of rays. Each ray is one *record* of eight numbers, exactly one
@@ -298,30 +192,6 @@ fn lanes_of<T: Copy>(numbers: &[T], group: usize) -> [T; LANES] {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn eight_normalised_vectors_equal_glams_to_the_bit() {
-        let vs: Vec<Vec3> = (0..8)
-            .map(|i| Vec3::new(0.1 + i as f32, -0.37 * i as f32, 1.0 / (i as f32 + 3.0)))
-            .collect();
-        let wide = Vec3x8 {
-            x: f32x8::from(std::array::from_fn::<f32, 8, _>(|i| vs[i].x)),
-            y: f32x8::from(std::array::from_fn::<f32, 8, _>(|i| vs[i].y)),
-            z: f32x8::from(std::array::from_fn::<f32, 8, _>(|i| vs[i].z)),
-        };
-        let n = wide.normalize();
-        let d = wide.dot(Vec3x8::splat(Vec3::new(0.3, -0.7, 0.2)));
-        for (i, v) in vs.iter().enumerate() {
-            assert_eq!(n.lane(i), v.normalize());
-            assert_eq!(d.as_array_ref()[i], v.dot(Vec3::new(0.3, -0.7, 0.2)));
-        }
-    }
-
-    #[test]
-    fn negating_keeps_the_sign_of_zero_as_scalar_code_does() {
-        let minus = negate(f32x8::splat(0.0)).as_array_ref()[0];
-        assert!(minus == 0.0 && minus.is_sign_negative());
-    }
 
     #[test]
     fn a_wave_of_three_rays_pads_to_one_group_of_copies() {

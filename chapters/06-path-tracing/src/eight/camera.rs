@@ -4,7 +4,7 @@
 use raylab::Camera;
 use wide::f32x8;
 
-use super::vec3x8::Vec3x8;
+use raylab::lanes::Vec3x8;
 
 /// What every camera ray of an image shares, in all eight lanes.
 pub struct CameraX8 {

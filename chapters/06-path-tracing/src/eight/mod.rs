@@ -20,7 +20,6 @@ mod camera;
 mod paths;
 mod scene;
 mod terms;
-mod vec3x8;
 mod window;
 
 use raylab::Camera;
@@ -33,8 +32,8 @@ use crate::random::Random;
 use crate::render::{PathSettings, PixelSums};
 use camera::CameraX8;
 use paths::Paths;
+use raylab::lanes::{LANES, lanes_of, mask_from_bits};
 use scene::SceneX8;
-use vec3x8::{LANES, lanes_of, mask_from_bits};
 use window::Window;
 
 /// Every pixel's sums, one image row per task, ticking `progress` per row.

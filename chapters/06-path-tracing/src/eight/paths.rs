@@ -20,9 +20,9 @@ use wide::{CmpGt, CmpLe, CmpLt, CmpNe, f32x8};
 
 use super::scene::{Hits, SceneX8, Surfaces};
 use super::terms::TermsX8;
-use super::vec3x8::{LANES, Vec3x8, lanes_of, mask_from_bits, negate};
 use crate::integrator::{Lobe, PathTracer};
 use crate::random::Random;
+use raylab::lanes::{LANES, Vec3x8, lanes_of, mask_from_bits, negate};
 
 /// Eight paths between two bounces.
 pub struct Paths {

@@ -8,9 +8,9 @@
 
 use raylab::scene::Object;
 use raylab::{Hit, Material, Scene};
-use wide::{CmpEq, CmpGe, CmpGt, CmpLt, CmpNe, f32x8};
+use wide::{CmpEq, CmpGe, CmpLt, CmpNe, f32x8};
 
-use super::vec3x8::{Vec3x8, negate};
+use raylab::lanes::{Vec3x8, plane_hits, sphere_hits};
 
 /// Object numbers in a lane: nothing hit, the ground, sphere `k` is `k + 1`.
 const NOTHING: f32 = -1.0;
@@ -98,41 +98,14 @@ impl<'s> SceneX8<'s> {
     /// The plane's `t` in every lane, and a mask of the lanes it counts in.
     #[inline]
     fn plane(&self, o: Vec3x8, d: Vec3x8) -> (f32x8, f32x8) {
-        let n = self.plane_normal;
-        let denom = d.dot(n);
-        let t = (self.plane_point - o).dot(n) / denom;
-        // Mask: a ray parallel to the plane never meets it (its lane
-        // divided by almost zero above), and only crossings ahead count.
-        let crosses = !denom.abs().cmp_lt(f32x8::splat(1e-8));
-        (t, crosses & t.cmp_gt(f32x8::ZERO))
+        plane_hits(self.plane_point, self.plane_normal, o, d)
     }
 
-    // ANCHOR: sphere
     /// A sphere's nearest `t > 0` in every lane, and the lanes that hit it.
     #[inline]
     fn sphere(s: &SphereX8, o: Vec3x8, d: Vec3x8) -> (f32x8, f32x8) {
-        let oc = o - s.centre;
-        let b = oc.dot(d);
-        let q = oc.dot(oc) - s.radius_squared;
-        let disc = b * b - q;
-        // Mask: the line meets the sphere. Most spheres are missed by all
-        // eight rays, and then the square root is skipped.
-        let meets = !disc.cmp_lt(f32x8::ZERO);
-        if meets.none() {
-            return (f32x8::ZERO, meets);
-        }
-        // A lane that misses takes the root of a negative number (NaN);
-        // its `meets` is clear, so nothing reads it.
-        let root = disc.sqrt();
-        let minus_b = negate(b);
-        let t0 = minus_b - root;
-        let t1 = minus_b + root;
-        // Mask: the entry `t0` counts where it is ahead of the origin;
-        // elsewhere the origin is inside (or past) and the exit `t1` does.
-        let front = t0.cmp_gt(f32x8::ZERO);
-        (front.blend(t0, t1), meets & t1.cmp_gt(f32x8::ZERO))
+        sphere_hits(s.centre, s.radius_squared, o, d)
     }
-    // ANCHOR_END: sphere
 
     /// The nearest hit of eight rays: the ground, then every sphere in
     /// order, only a strictly nearer hit replacing the best so far (ties

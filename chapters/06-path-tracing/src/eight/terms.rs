@@ -2,8 +2,8 @@
 
 use wide::{CmpEq, f32x8};
 
-use super::vec3x8::Vec3x8;
 use crate::integrator::Terms;
+use raylab::lanes::Vec3x8;
 
 /// [`Terms`] in lanes: lane `l` of each is path `l`'s.
 #[derive(Clone, Copy, Debug)]

@@ -1,14 +1,15 @@
-//! Eight vectors side by side: the x of every lane in one `f32x8`, and so
-//! on (chapter 7's structure of arrays). Every operation is the one glam's
-//! `Vec3A` does, component by component and in the same order, so each
-//! lane's result is the scalar code's to the bit.
+//! Eight vectors side by side, for the tracers that work on eight rays or
+//! paths at once (chapter 7, and chapter 6's eight lanes): the x of every
+//! lane in one `f32x8`, and so on, a *structure of arrays*. Every operation
+//! is the one glam's `Vec3A` does, component by component and in the same
+//! order, so each lane's result is the scalar code's to the bit.
 
 use std::ops::{Add, Mul, Neg, Sub};
 
-use raylab::Vec3;
-use wide::f32x8;
+use crate::Vec3;
+use wide::{CmpGt, CmpLt, f32x8};
 
-/// How many paths are traced at once: one AVX register of `f32`.
+/// How many rays are traced at once: one AVX register of `f32`.
 pub const LANES: usize = 8;
 
 /// Eight vectors, one per lane.
@@ -69,15 +70,17 @@ impl Vec3x8 {
         )
     }
 
-    /// Eight dot products, summed as glam sums them: `(x·x' + y·y') + z·z'`
-    /// (float addition is not associative, and the bytes must match).
+    // ANCHOR: dot
+    /// Eight dot products. Summed as glam sums them, `(x·x' + y·y') + z·z'`:
+    /// float addition is not associative, and the bytes must match.
     #[inline]
     pub fn dot(self, o: Vec3x8) -> f32x8 {
         self.x * o.x + self.y * o.y + self.z * o.z
     }
 
-    /// Eight unit vectors, as `Vec3A::normalize` makes one: each component
-    /// divided by the square root of the dot product.
+    /// Eight unit vectors, made as glam's `normalize` makes one: each
+    /// component divided by the square root of the dot product (not
+    /// multiplied by its reciprocal, which rounds differently).
     #[inline]
     pub fn normalize(self) -> Vec3x8 {
         let length = self.dot(self).sqrt();
@@ -87,6 +90,7 @@ impl Vec3x8 {
             z: self.z / length,
         }
     }
+    // ANCHOR_END: dot
 
     /// Each lane's vector times that lane's number.
     #[inline]
@@ -136,6 +140,52 @@ pub fn lanes_of(mut bits: u32) -> impl Iterator<Item = usize> {
         })
     })
 }
+
+// ANCHOR: plane
+/// Where eight rays meet a plane (a point on it and its unit normal, in
+/// every lane): `t` in every lane, and a mask of the lanes it counts in.
+#[inline]
+pub fn plane_hits(point: Vec3x8, normal: Vec3x8, o: Vec3x8, d: Vec3x8) -> (f32x8, f32x8) {
+    let denom = d.dot(normal);
+    let t = (point - o).dot(normal) / denom;
+    // Mask 1: a ray parallel to the plane never meets it. Its lane
+    // divided by (almost) zero above; the mask throws that away.
+    let crosses = !denom.abs().cmp_lt(f32x8::splat(1e-8));
+    // Mask 2: only crossings in front of the ray count.
+    (t, crosses & t.cmp_gt(f32x8::ZERO))
+}
+// ANCHOR_END: plane
+
+// ANCHOR: sphere
+/// Where eight rays meet a sphere (its centre and squared radius, in every
+/// lane): the nearest `t > 0` in every lane, and the lanes that hit it.
+/// The arithmetic is `Sphere::intersect`'s, operation for operation.
+#[inline]
+pub fn sphere_hits(centre: Vec3x8, radius_squared: f32x8, o: Vec3x8, d: Vec3x8) -> (f32x8, f32x8) {
+    let oc = o - centre;
+    let b = oc.dot(d);
+    let q = oc.dot(oc) - radius_squared;
+    let disc = b * b - q;
+    let meets = !disc.cmp_lt(f32x8::ZERO);
+    // Divergence: most spheres are missed by all eight rays of a
+    // group, and then the square root (the slow part) is skipped.
+    if meets.none() {
+        return (f32x8::ZERO, meets);
+    }
+    // A lane whose line misses the sphere takes the square root of a
+    // negative number (NaN); its mask is clear, so nothing reads it.
+    let root = disc.sqrt();
+    let minus_b = negate(b);
+    let t0 = minus_b - root;
+    let t1 = minus_b + root;
+    // Mask: where the ray enters in front of its origin, t0 counts;
+    // where the origin is inside the sphere (t0 ≤ 0), the exit t1.
+    let front = t0.cmp_gt(f32x8::ZERO);
+    let t = front.blend(t0, t1);
+    let hit = meets & (front | t1.cmp_gt(f32x8::ZERO));
+    (t, hit)
+}
+// ANCHOR_END: sphere
 
 impl Neg for Vec3x8 {
     type Output = Vec3x8;
@@ -213,6 +263,13 @@ mod tests {
             assert_eq!(n[i], v.normalize());
             assert_eq!(d[i], v.dot(Vec3::new(0.3, -0.7, 0.2)));
         }
+    }
+
+    #[test]
+    fn negating_keeps_the_sign_of_zero_as_scalar_code_does() {
+        let minus = negate(f32x8::splat(0.0)).as_array_ref()[0];
+        assert!(minus == 0.0 && minus.is_sign_negative());
+        assert!((-Vec3x8::ZERO).lane(3).x.is_sign_negative());
     }
 
     #[test]
