@@ -6,7 +6,7 @@
 
 use std::ops::{Add, Mul, Neg, Sub};
 
-use crate::Vec3;
+use crate::{Camera, Vec3};
 use wide::{CmpGt, CmpLt, f32x8};
 
 /// How many rays are traced at once: one AVX register of `f32`.
@@ -187,6 +187,46 @@ pub fn sphere_hits(centre: Vec3x8, radius_squared: f32x8, o: Vec3x8, d: Vec3x8) 
 }
 // ANCHOR_END: sphere
 
+/// What every camera ray of an image shares, in all eight lanes: eight
+/// camera rays at once, operation for operation as `Camera::ray` makes one,
+/// so the directions are the same to the bit.
+#[derive(Clone, Copy, Debug)]
+pub struct CameraX8 {
+    pub eye: Vec3x8,
+    size: (f32x8, f32x8),
+    aspect: f32x8,
+    half_height: f32x8,
+    forward: Vec3x8,
+    right: Vec3x8,
+    up: Vec3x8,
+}
+
+impl CameraX8 {
+    pub fn new(camera: &Camera, width: u32, height: u32) -> Self {
+        let (w, h) = (width as f32, height as f32);
+        CameraX8 {
+            eye: Vec3x8::splat(camera.eye),
+            size: (f32x8::splat(w), f32x8::splat(h)),
+            aspect: f32x8::splat(w / h),
+            half_height: f32x8::splat(camera.half_height()),
+            forward: Vec3x8::splat(camera.forward()),
+            right: Vec3x8::splat(camera.right()),
+            up: Vec3x8::splat(camera.up()),
+        }
+    }
+
+    /// The unit directions through image points (`i + sx`, `j + sy`), in
+    /// pixels, one per lane.
+    #[inline]
+    pub fn directions(&self, column: f32x8, row: f32x8) -> Vec3x8 {
+        let two = f32x8::splat(2.0);
+        let (w, h) = self.size;
+        let x = (two * column / w - f32x8::ONE) * self.half_height * self.aspect;
+        let y = (f32x8::ONE - two * row / h) * self.half_height;
+        (self.forward + self.right.scale(x) + self.up.scale(y)).normalize()
+    }
+}
+
 impl Neg for Vec3x8 {
     type Output = Vec3x8;
     #[inline]
@@ -278,5 +318,24 @@ mod tests {
             assert_eq!(mask_from_bits(bits).move_mask() as u32, bits);
         }
         assert_eq!(lanes_of(0b1001_0010).collect::<Vec<_>>(), [1, 4, 7]);
+    }
+
+    #[test]
+    fn eight_camera_rays_at_a_time_are_camera_ray_to_the_bit() {
+        let camera = Camera::lab();
+        let wide = CameraX8::new(&camera, 803, 7);
+        let pixel = |l: usize| (100 * l as u32 + 2, l as u32 % 7);
+        let offset = |l: usize| (0.37 + 0.07 * l as f32, 0.93 - 0.11 * l as f32);
+        let column = f32x8::new(std::array::from_fn(|l| pixel(l).0 as f32 + offset(l).0));
+        let row = f32x8::new(std::array::from_fn(|l| pixel(l).1 as f32 + offset(l).1));
+        let d = wide.directions(column, row).to_lanes();
+        for (l, d) in d.iter().enumerate() {
+            let (i, j) = pixel(l);
+            assert_eq!(
+                *d,
+                camera.ray(i, j, offset(l), 803, 7).direction,
+                "lane {l}"
+            );
+        }
     }
 }

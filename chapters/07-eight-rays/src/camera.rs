@@ -3,7 +3,9 @@
 use raylab::{Camera, RayKind, Settings};
 use wide::f32x8;
 
-use crate::soa::{Group, LANES, Vec3x8};
+use raylab::lanes::CameraX8;
+
+use crate::soa::{Group, LANES};
 use crate::wave::END;
 
 // ANCHOR: primary
@@ -16,13 +18,7 @@ pub struct PrimaryRays<'a> {
     settings: &'a Settings,
     j: u32,
     spp: usize,
-    size: (f32x8, f32x8),
-    aspect: f32x8,
-    half_height: f32x8,
-    forward: Vec3x8,
-    right: Vec3x8,
-    up: Vec3x8,
-    eye: Vec3x8,
+    camera: CameraX8,
     /// For points that are the same in every pixel: the lanes' places.
     repeating: Option<Repeating>,
 }
@@ -88,18 +84,11 @@ fn gcd(a: usize, b: usize) -> usize {
 
 impl<'a> PrimaryRays<'a> {
     pub fn new(camera: &Camera, settings: &'a Settings, j: u32) -> Self {
-        let (w, h) = (settings.width as f32, settings.height as f32);
         PrimaryRays {
             settings,
             j,
             spp: settings.sampling.spp() as usize,
-            size: (f32x8::splat(w), f32x8::splat(h)),
-            aspect: f32x8::splat(w / h),
-            half_height: f32x8::splat(camera.half_height()),
-            forward: Vec3x8::splat(camera.forward()),
-            right: Vec3x8::splat(camera.right()),
-            up: Vec3x8::splat(camera.up()),
-            eye: Vec3x8::splat(camera.eye),
+            camera: CameraX8::new(camera, settings.width, settings.height),
             repeating: Repeating::new(&settings.sampling, j),
         }
     }
@@ -139,14 +128,9 @@ impl<'a> PrimaryRays<'a> {
                 0
             }
         });
-        let two = f32x8::splat(2.0);
-        let (w, h) = self.size;
-        let x = (two * column / w - f32x8::ONE) * self.half_height * self.aspect;
-        let y = (f32x8::ONE - two * row / h) * self.half_height;
-        let direction = (self.forward + self.right.scale(x) + self.up.scale(y)).normalize();
         Group {
-            origin: self.eye,
-            direction,
+            origin: self.camera.eye,
+            direction: self.camera.directions(column, row),
             weight: f32x8::ONE,
             sample,
             kind: [RayKind::Primary; LANES],

@@ -16,7 +16,6 @@
 //! (path regeneration), and [`window`] puts the finished samples back in
 //! sample order before they are summed.
 
-mod camera;
 mod paths;
 mod scene;
 mod terms;
@@ -26,13 +25,13 @@ use raylab::Camera;
 use raylab::indicatif::ProgressBar;
 use raylab::sampling::{PixelHash, PixelSamples, Stream};
 use rayon::prelude::*;
+use wide::f32x8;
 
 use crate::integrator::PathTracer;
 use crate::random::Random;
 use crate::render::{PathSettings, PixelSums};
-use camera::CameraX8;
 use paths::Paths;
-use raylab::lanes::{LANES, lanes_of, mask_from_bits};
+use raylab::lanes::{CameraX8, LANES, lanes_of, mask_from_bits};
 use scene::SceneX8;
 use window::Window;
 
@@ -129,7 +128,7 @@ impl Rows<'_, '_> {
                 next += 1;
             }
             if started != 0 {
-                let directions = self.camera.directions(column, row);
+                let directions = self.camera.directions(f32x8::new(column), f32x8::new(row));
                 let mask = mask_from_bits(started);
                 self.paths.start(mask, self.camera.eye, directions);
             }
