@@ -16,11 +16,26 @@ use crate::wave::END;
 /// operation for operation, so the directions are the same to the bit.
 pub struct PrimaryRays<'a> {
     settings: &'a Settings,
+    primary: &'a Primary,
     j: u32,
     spp: usize,
+}
+
+/// What every row's primary rays share, made once per image: the camera
+/// in lanes and, for points that are the same in every pixel, the lanes'
+/// places.
+pub struct Primary {
     camera: CameraX8,
-    /// For points that are the same in every pixel: the lanes' places.
     repeating: Option<Repeating>,
+}
+
+impl Primary {
+    pub fn new(camera: &Camera, settings: &Settings) -> Self {
+        Primary {
+            camera: CameraX8::new(camera, settings.width, settings.height),
+            repeating: Repeating::new(&settings.sampling),
+        }
+    }
 }
 
 /// The most groups in a [`Repeating`] period (32 covers every `spp` up to
@@ -31,8 +46,9 @@ const MAX_PERIOD: usize = 32;
 /// pixel centre, the lab's five, the grid). Sample `s` is pixel `s / spp`'s
 /// point `s % spp`, so the lanes' pattern repeats every `lcm(spp, 8)`
 /// samples: `period` groups, `pixels` pixels further on. One period's
-/// offsets are worked out per row, and each group adds its first pixel to
-/// them in registers, instead of finding eight points one lane at a time.
+/// offsets are worked out once per image, and each group adds its first
+/// pixel and its row to them in registers, instead of finding eight points
+/// one lane at a time.
 struct Repeating {
     period: usize,
     pixels: usize,
@@ -44,7 +60,7 @@ struct Repeating {
 }
 
 impl Repeating {
-    fn new(sampling: &raylab::Sampling, j: u32) -> Option<Repeating> {
+    fn new(sampling: &raylab::Sampling) -> Option<Repeating> {
         if sampling.is_random() {
             return None;
         }
@@ -54,8 +70,8 @@ impl Repeating {
         if period > MAX_PERIOD {
             return None;
         }
-        // Any pixel's points are every pixel's: the row's first stands in.
-        let points = sampling.pixel((0, j));
+        // Any pixel's points are every pixel's: the first stands in.
+        let points = sampling.pixel((0, 0));
         let mut repeating = Repeating {
             period,
             pixels: samples / spp,
@@ -83,13 +99,13 @@ fn gcd(a: usize, b: usize) -> usize {
 }
 
 impl<'a> PrimaryRays<'a> {
-    pub fn new(camera: &Camera, settings: &'a Settings, j: u32) -> Self {
+    /// Row `j`'s primary rays, from what the image's rows share.
+    pub fn new(primary: &'a Primary, settings: &'a Settings, j: u32) -> Self {
         PrimaryRays {
             settings,
+            primary,
             j,
             spp: settings.sampling.spp() as usize,
-            camera: CameraX8::new(camera, settings.width, settings.height),
-            repeating: Repeating::new(&settings.sampling, j),
         }
     }
 
@@ -107,7 +123,7 @@ impl<'a> PrimaryRays<'a> {
     pub fn group(&self, group: usize) -> Group {
         let first = group * LANES;
         let count = (self.len() - first).min(LANES);
-        let (column, row) = match &self.repeating {
+        let (column, row) = match &self.primary.repeating {
             Some(repeating) if count == LANES => {
                 let (period, phase) = (group / repeating.period, group % repeating.period);
                 // `i as f32 + sx` as the scalar camera adds it: the pixel's
@@ -129,8 +145,8 @@ impl<'a> PrimaryRays<'a> {
             }
         });
         Group {
-            origin: self.camera.eye,
-            direction: self.camera.directions(column, row),
+            origin: self.primary.camera.eye,
+            direction: self.primary.camera.directions(column, row),
             weight: f32x8::ONE,
             sample,
             kind: [RayKind::Primary; LANES],
@@ -180,8 +196,9 @@ mod tests {
             epsilon: 1e-4,
             sampling: Sampling::LAB_FIVE,
         };
+        let primary = Primary::new(&camera, &settings);
         for j in 0..7 {
-            let rays = PrimaryRays::new(&camera, &settings, j);
+            let rays = PrimaryRays::new(&primary, &settings, j);
             assert_eq!(rays.len(), 13 * 5);
             for s in 0..rays.len() {
                 let i = s / 5;

@@ -12,7 +12,7 @@ use raylab::{Camera, Maps, PixelMaps, RayKind, Rendered, Scene, Settings, Tracer
 use rayon::prelude::*;
 
 use crate::EightRays;
-use crate::camera::PrimaryRays;
+use crate::camera::{Primary, PrimaryRays};
 use crate::intersect::SceneX8;
 use crate::shade::Light;
 use crate::wave::{END, Ledger, Setup, Waves};
@@ -76,6 +76,7 @@ pub fn render_waves(
     let (width, height) = (settings.width as usize, settings.height as usize);
     let features = step.like.features();
     let setup = Setup {
+        primary: Primary::new(camera, settings),
         scene: SceneX8::new(scene, features),
         light: Light::new(scene),
         features,
@@ -140,7 +141,7 @@ fn render_row(
     let j = row.j;
     let waves = &mut *worker.waves;
     waves.start(settings.width as usize * spp, setup);
-    waves.trace(setup, &PrimaryRays::new(camera, settings, j));
+    waves.trace(setup, &PrimaryRays::new(&setup.primary, settings, j));
 
     let mut tally = RowTally {
         counts: waves.counts,

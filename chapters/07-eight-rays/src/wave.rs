@@ -16,7 +16,7 @@ use raylab::trace::{RAY_BUDGET, RayCounts};
 use raylab::{RayKind, Vec3};
 use wide::f32x8;
 
-use crate::camera::PrimaryRays;
+use crate::camera::{Primary, PrimaryRays};
 use crate::intersect::{SceneX8, senders};
 use crate::like::Features;
 use crate::shade::{Light, reflect, refract};
@@ -93,6 +93,8 @@ fn append<T: Copy>(to: &mut Vec<T>, eight: &[T; LANES], keep: usize) {
 
 /// The fixed part of a render: the scene in lanes, the light, the limits.
 pub struct Setup {
+    /// What every row's primary rays share.
+    pub primary: Primary,
     pub scene: SceneX8,
     pub light: Light,
     pub features: Features,
