@@ -129,12 +129,13 @@ impl SceneX8 {
     }
     // ANCHOR_END: nearest
 
-    /// Whether each of eight shadow rays meets anything at all.
-    pub fn any(&self, o: Vec3x8, d: Vec3x8) -> f32x8 {
+    /// Whether each of eight shadow rays meets anything at all, in the
+    /// lanes of `asked` (the others' answers may be wrong).
+    pub fn any(&self, o: Vec3x8, d: Vec3x8, asked: f32x8) -> f32x8 {
         let mut blocked = self.plane(o, d).1;
         for sphere in &self.spheres {
-            if blocked.all() {
-                break; // every lane is in shadow already
+            if (blocked | !asked).all() {
+                break; // every lane asked about is in shadow already
             }
             blocked |= SceneX8::sphere(sphere, o, d).1;
         }
@@ -283,10 +284,32 @@ mod tests {
         let wide = SceneX8::new(&scene, Like::AntiAliasing.features());
         for j in 0..30 {
             let (o, d, rays) = eight_rays(j);
-            let blocked = wide.any(o, d);
+            let blocked = wide.any(o, d, raylab::lanes::mask_from_bits(0xff));
             for (lane, ray) in rays.iter().enumerate() {
                 let lane_blocked = blocked.as_array_ref()[lane] != 0.0;
                 assert_eq!(lane_blocked, scene.any_hit(ray), "row {j}, lane {lane}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_shadow_test_answers_every_lane_it_is_asked_about() {
+        // Every mask of asked lanes that leaves some out: the lanes asked
+        // get the scalar answer, whatever the others' rays meet.
+        let scene = Scene::lab();
+        let wide = SceneX8::new(&scene, Like::AntiAliasing.features());
+        for j in (0..30).step_by(3) {
+            let (o, d, rays) = eight_rays(j);
+            for asked in (1..0xffu32).step_by(7) {
+                let blocked = wide.any(o, d, raylab::lanes::mask_from_bits(asked));
+                for lane in raylab::lanes::lanes_of(asked) {
+                    let lane_blocked = blocked.as_array_ref()[lane] != 0.0;
+                    assert_eq!(
+                        lane_blocked,
+                        scene.any_hit(&rays[lane]),
+                        "row {j}, lane {lane}"
+                    );
+                }
             }
         }
     }

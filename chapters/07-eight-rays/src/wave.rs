@@ -14,7 +14,7 @@
 
 use raylab::trace::{RAY_BUDGET, RayCounts};
 use raylab::{RayKind, Vec3};
-use wide::f32x8;
+use wide::{CmpGt, f32x8};
 
 use crate::camera::{Primary, PrimaryRays};
 use crate::intersect::{SceneX8, senders};
@@ -143,10 +143,19 @@ fn shade_group(setup: &Setup, rays: &Group, can_send: bool) -> Shaded {
     let s = setup.scene.surfaces(o, d, &hits);
     let eps = f32x8::splat(setup.epsilon);
 
-    // Shadow rays from every lane; only hit lanes' answers are used.
+    // Shadow rays from every lane that hit, as the scalar tracer casts
+    // them; but only a surface that faces the sun needs the answer (on the
+    // far side `cos θ` is 0, lit or not), so only those lanes are asked.
     let in_shadow = if setup.features.shadows {
         let to_sun = setup.light.to_sun;
-        setup.scene.any(s.point + to_sun.scale(eps), to_sun)
+        let faces_sun = hits.hit & s.facing_normal.dot(to_sun).cmp_gt(f32x8::ZERO);
+        if faces_sun.none() {
+            f32x8::ZERO
+        } else {
+            setup
+                .scene
+                .any(s.point + to_sun.scale(eps), to_sun, faces_sun)
+        }
     } else {
         f32x8::ZERO
     };
