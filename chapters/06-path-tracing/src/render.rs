@@ -239,7 +239,15 @@ pub fn render(
             pixels.par_iter().map(f).collect(),
         )
     };
-    let terms = [0, 1, 2, 3, 4].map(|t| image(&|p: &PixelSums| p.terms.as_array()[t]));
+    // One field each (not `as_array()[t]`, which would copy all five
+    // terms of every pixel to keep one).
+    let terms = [
+        image(&|p| p.terms.seen),
+        image(&|p| p.terms.sun_direct),
+        image(&|p| p.terms.sky_direct),
+        image(&|p| p.terms.indirect),
+        image(&|p| p.terms.caustics),
+    ];
     PathRender {
         settings: *settings,
         image: image(&|p| p.mean),
