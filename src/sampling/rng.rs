@@ -61,7 +61,7 @@ pub fn sample_rng(seed: u64, pixel: (u32, u32), sample: u32, stream: Stream) -> 
 /// hashes them once per pixel rather than N times. The generators are the
 /// same either way.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct PixelHash(u64);
+pub struct PixelHash(pub(super) u64);
 
 impl PixelHash {
     #[inline]

@@ -18,21 +18,21 @@
 
 mod paths;
 mod scene;
+mod starts;
 mod terms;
 mod window;
 
 use raylab::Camera;
 use raylab::indicatif::ProgressBar;
-use raylab::sampling::{PixelHash, PixelSamples, Stream};
 use rayon::prelude::*;
 use wide::f32x8;
 
 use crate::integrator::PathTracer;
-use crate::random::Random;
 use crate::render::{PathSettings, PixelSums};
 use paths::Paths;
 use raylab::lanes::{CameraX8, LANES, lanes_of, mask_from_bits};
 use scene::SceneX8;
+use starts::Starts;
 use window::Window;
 
 /// Every pixel's sums, one image row per task, ticking `progress` per row.
@@ -53,8 +53,8 @@ pub(crate) fn render_pixels(
         .map(|_| PixelSums::default())
         .collect();
     pixels.par_chunks_mut(width).enumerate().for_each_init(
-        || (Paths::default(), Window::default()),
-        |(paths, window), (j, row)| {
+        || (Paths::default(), Window::default(), Starts::default()),
+        |(paths, window, starts), (j, row)| {
             let mut rows = Rows {
                 tracer,
                 scene: &scene,
@@ -62,6 +62,7 @@ pub(crate) fn render_pixels(
                 settings,
                 paths,
                 window,
+                starts,
             };
             rows.render_row(j as u32, row);
             progress.inc(1);
@@ -79,13 +80,8 @@ struct Rows<'a, 's> {
     settings: &'a PathSettings,
     paths: &'a mut Paths,
     window: &'a mut Window,
-}
-
-/// The pixel whose samples are being handed out, with what they share.
-struct Feeding {
-    pixel: usize,
-    samples: PixelSamples,
-    hash: PixelHash,
+    /// The row's next samples, made ready eight at a time.
+    starts: &'a mut Starts,
 }
 
 impl Rows<'_, '_> {
@@ -99,7 +95,7 @@ impl Rows<'_, '_> {
         let total = out.len() * spp;
         let mut job = [0usize; LANES];
         let mut next = 0;
-        let mut feeding: Option<Feeding> = None;
+        self.starts.clear();
         self.window.clear();
         while self.window.summed() < total {
             // Every idle lane starts the next sample, while there is one
@@ -111,18 +107,9 @@ impl Rows<'_, '_> {
                 if next == total || !self.window.has_room_for(next) {
                     break;
                 }
-                let (pixel, sample) = (next / spp, (next % spp) as u32);
-                let f = match feeding {
-                    Some(ref f) if f.pixel == pixel => f,
-                    _ => feeding.insert(Feeding {
-                        pixel,
-                        samples: sampling.pixel((pixel as u32, j)),
-                        hash: PixelHash::new(sampling.seed(), (pixel as u32, j)),
-                    }),
-                };
-                let (sx, sy) = f.samples.offset(sample);
-                (column[lane], row[lane]) = (pixel as f32 + sx, j as f32 + sy);
-                self.paths.random[lane] = Random(f.hash.sample_rng(sample, Stream::Path));
+                let start = self.starts.get(sampling, j, next);
+                (column[lane], row[lane]) = (start.column, start.row);
+                self.paths.random.start(lane, start.state);
                 job[lane] = next;
                 started |= 1 << lane;
                 next += 1;

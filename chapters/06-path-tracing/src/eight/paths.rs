@@ -23,6 +23,8 @@ use super::terms::TermsX8;
 use crate::integrator::{Lobe, PathTracer};
 use crate::random::Random;
 use raylab::lanes::{LANES, Vec3x8, lanes_of, mask_from_bits, negate};
+use raylab::sampling::lanes::{Pcg32x8, lane_mask, sample_hashes, sample_rngs};
+use raylab::sampling::{PixelHash, Stream};
 
 /// Eight paths between two bounces.
 pub struct Paths {
@@ -44,8 +46,9 @@ pub struct Paths {
     pub active: f32x8,
     /// Each lane's own sample generator, `hash.sample_rng(sample,
     /// Stream::Path)` as the scalar tracer seeds it, replaced when the lane
-    /// takes a new sample.
-    pub random: [Random; LANES],
+    /// takes a new sample; all eight side by side, so that the lanes that
+    /// draw at the same point draw together.
+    pub random: Pcg32x8,
 }
 
 /// Eight idle lanes (each takes a path with [`Paths::start`]).
@@ -61,14 +64,10 @@ impl Default for Paths {
             hits: f32x8::ZERO,
             rays: f32x8::ZERO,
             active: f32x8::ZERO,
-            random: std::array::from_fn(|_| {
-                Random(raylab::sampling::sample_rng(
-                    0,
-                    (0, 0),
-                    0,
-                    raylab::sampling::Stream::Path,
-                ))
-            }),
+            random: sample_rngs(
+                sample_hashes([PixelHash::new(0, (0, 0)); LANES], [0; LANES]),
+                Stream::Path,
+            ),
         }
     }
 }
@@ -167,11 +166,13 @@ impl Paths {
         let (mut mirror, mut refraction) = (0u32, 0u32);
         for lane in lanes_of((shading & s.chooses).move_mask() as u32) {
             let hit = scene.hit(hits, s, lane);
-            match tracer.draw_lobe(d.lane(lane), &hit, &mut self.random[lane]) {
+            let mut random = Random(self.random.lane(lane));
+            match tracer.draw_lobe(d.lane(lane), &hit, &mut random) {
                 Lobe::Mirror => mirror |= 1 << lane,
                 Lobe::Refraction => refraction |= 1 << lane,
                 Lobe::Diffuse => {}
             }
+            self.random.set_lane(lane, &random.0);
         }
         let (mirror, refraction) = (mask_from_bits(mirror), mask_from_bits(refraction));
         let diffuse = shading & !(mirror | refraction);
@@ -211,7 +212,9 @@ impl Paths {
         } else {
             let mut towards = [sun.direction; LANES];
             for lane in lanes_of(diffuse.move_mask() as u32) {
-                towards[lane] = sun.draw(&mut self.random[lane]);
+                let mut random = Random(self.random.lane(lane));
+                towards[lane] = sun.draw(&mut random);
+                self.random.set_lane(lane, &random.0);
             }
             Vec3x8::from_lanes(towards)
         };
@@ -265,24 +268,25 @@ impl Paths {
     /// [`crate::integrator::cosine_direction`] in the lanes of `mask`: the
     /// rejection loop repeats while any lane's point is still outside the
     /// disc, and only those lanes draw again, so each lane draws exactly
-    /// the numbers its scalar path draws.
+    /// the numbers its scalar path draws (x, then y, from its own stream).
     fn cosine_direction(&mut self, n: Vec3x8, mask: f32x8) -> Vec3x8 {
-        let (mut x, mut y) = ([0f32; LANES], [0f32; LANES]);
+        let (two, one) = (f32x8::splat(2.0), f32x8::ONE);
+        let (mut x, mut y) = (f32x8::ZERO, f32x8::ZERO);
         let mut trying = mask.move_mask() as u32;
         let mut r2 = f32x8::ZERO;
         while trying != 0 {
-            for lane in lanes_of(trying) {
-                let random = &mut self.random[lane];
-                x[lane] = 2.0 * random.uniform() - 1.0;
-                y[lane] = 2.0 * random.uniform() - 1.0;
-            }
-            let (xs, ys) = (f32x8::new(x), f32x8::new(y));
-            r2 = xs * xs + ys * ys;
-            trying &= !(r2.cmp_lt(f32x8::ONE).move_mask() as u32);
+            let drawing = lane_mask(trying);
+            let u = self.random.uniform(drawing);
+            let v = self.random.uniform(drawing);
+            let again = mask_from_bits(trying);
+            x = again.blend(two * u - one, x);
+            y = again.blend(two * v - one, y);
+            r2 = x * x + y * y;
+            trying &= !(r2.cmp_lt(one).move_mask() as u32);
         }
         let (t, b) = any_orthonormal_pair(n);
-        let z = (f32x8::ONE - r2).max(f32x8::ZERO).sqrt();
-        t.scale(f32x8::new(x)) + b.scale(f32x8::new(y)) + n.scale(z)
+        let z = (one - r2).max(f32x8::ZERO).sqrt();
+        t.scale(x) + b.scale(y) + n.scale(z)
     }
     // ANCHOR_END: cosine
 }
