@@ -21,7 +21,6 @@ use wide::{CmpGt, CmpLe, CmpLt, CmpNe, f32x8};
 use super::scene::{Hits, SceneX8, Surfaces};
 use super::terms::TermsX8;
 use crate::integrator::{Lobe, PathTracer};
-use crate::random::Random;
 use raylab::lanes::{LANES, Vec3x8, lanes_of, mask_from_bits, negate};
 use raylab::sampling::lanes::{Pcg32x8, lane_mask, sample_hashes, sample_rngs};
 use raylab::sampling::{PixelHash, Stream};
@@ -161,18 +160,21 @@ impl Paths {
     ) {
         let d = self.direction;
         let nf = s.facing_normal;
-        // The lobe, per lane and with the learner's `choose_lobe`, only
-        // where there is a choice: a matte surface draws no number for it.
+        // The lobe, only where there is a choice (a matte surface draws no
+        // number for it, as in `PathTracer::draw_lobe`): the numbers drawn
+        // in lanes, then the learner's `choose_lobe` per lane.
         let (mut mirror, mut refraction) = (0u32, 0u32);
-        for lane in lanes_of((shading & s.chooses).move_mask() as u32) {
-            let hit = scene.hit(hits, s, lane);
-            let mut random = Random(self.random.lane(lane));
-            match tracer.draw_lobe(d.lane(lane), &hit, &mut random) {
-                Lobe::Mirror => mirror |= 1 << lane,
-                Lobe::Refraction => refraction |= 1 << lane,
-                Lobe::Diffuse => {}
+        let choosing = (shading & s.chooses).move_mask() as u32;
+        if choosing != 0 {
+            let u = self.random.uniform(lane_mask(choosing));
+            for lane in lanes_of(choosing) {
+                let hit = scene.hit(hits, s, lane);
+                match tracer.choose_lobe(d.lane(lane), &hit, u.as_array_ref()[lane]) {
+                    Lobe::Mirror => mirror |= 1 << lane,
+                    Lobe::Refraction => refraction |= 1 << lane,
+                    Lobe::Diffuse => {}
+                }
             }
-            self.random.set_lane(lane, &random.0);
         }
         let (mirror, refraction) = (mask_from_bits(mirror), mask_from_bits(refraction));
         let diffuse = shading & !(mirror | refraction);
@@ -206,15 +208,18 @@ impl Paths {
         let sun = &tracer.sun;
         let nf = s.facing_normal;
         let k = self.diffuse_bounces;
-        // A point sun is one direction; a disc draws two numbers per lane.
+        // A point sun is one direction; a disc draws two numbers per lane
+        // (in lanes, in `Sunlight::draw`'s order), and each lane's point on
+        // the disc is found as the scalar tracer finds it.
         let to_sun = if sun.is_point() {
             Vec3x8::splat(sun.direction)
         } else {
+            let drawing = diffuse.move_mask() as u32;
+            let u = self.random.uniform(lane_mask(drawing));
+            let v = self.random.uniform(lane_mask(drawing));
             let mut towards = [sun.direction; LANES];
-            for lane in lanes_of(diffuse.move_mask() as u32) {
-                let mut random = Random(self.random.lane(lane));
-                towards[lane] = sun.draw(&mut random);
-                self.random.set_lane(lane, &random.0);
+            for lane in lanes_of(drawing) {
+                towards[lane] = sun.sample(u.as_array_ref()[lane], v.as_array_ref()[lane]);
             }
             Vec3x8::from_lanes(towards)
         };
