@@ -15,9 +15,9 @@
 //! where `l·L` needs all 64 bits (`*` gives its low half, `mul_keep_high`
 //! its high one) and the other two products only their low halves.
 
-use rand_pcg::Pcg32;
 use wide::{f32x8, u32x8};
 
+use super::rng::{SPLITMIX_GAMMA, SPLITMIX_MIX};
 use super::{PixelHash, Stream};
 use crate::lanes::LANES;
 
@@ -49,11 +49,6 @@ impl U64x8 {
     pub fn to_array(self) -> [u64; LANES] {
         let (hi, lo) = (self.hi.to_array(), self.lo.to_array());
         std::array::from_fn(|l| (u64::from(hi[l]) << 32) | u64::from(lo[l]))
-    }
-
-    fn lane(&self, lane: usize) -> u64 {
-        let (hi, lo) = (self.hi.as_array_ref()[lane], self.lo.as_array_ref()[lane]);
-        (u64::from(hi) << 32) | u64::from(lo)
     }
 
     fn set_lane(&mut self, lane: usize, x: u64) {
@@ -116,9 +111,9 @@ impl U64x8 {
 /// [`splitmix64`](super::splitmix64) in every lane.
 #[inline]
 pub fn splitmix64_x8(x: U64x8) -> U64x8 {
-    let z = x.add(U64x8::splat(0x9e37_79b9_7f4a_7c15));
-    let z = z.xor(z.shr(30)).mul(0xbf58_476d_1ce4_e5b9);
-    let z = z.xor(z.shr(27)).mul(0x94d0_49bb_1331_11eb);
+    let z = x.add(U64x8::splat(SPLITMIX_GAMMA));
+    let z = z.xor(z.shr(30)).mul(SPLITMIX_MIX[0]);
+    let z = z.xor(z.shr(27)).mul(SPLITMIX_MIX[1]);
     z.xor(z.shr(31))
 }
 
@@ -129,7 +124,6 @@ pub struct Pcg32x8 {
     state: U64x8,
     /// The stream's increment, `2 · stream + 1`, the same in every lane.
     increment: u64,
-    stream: u64,
 }
 
 impl Pcg32x8 {
@@ -139,11 +133,7 @@ impl Pcg32x8 {
         // As `rand_pcg` moves away from the initial value: add, then step.
         let state = state.add(U64x8::splat(increment));
         let state = state.mul(PCG_MULTIPLIER).add(U64x8::splat(increment));
-        Pcg32x8 {
-            state,
-            increment,
-            stream,
-        }
+        Pcg32x8 { state, increment }
     }
 
     /// Each lane's `next_u32()`, drawn only in the lanes of `mask` (all
@@ -168,16 +158,6 @@ impl Pcg32x8 {
         let top = (self.next_u32(mask) >> 8u32).to_array();
         // Below 2²⁴, so every value is an exact f32.
         f32x8::new(top.map(|t| t as f32)) * f32x8::splat(1.0 / (1u32 << 24) as f32)
-    }
-
-    /// Lane `lane`'s generator, as the scalar code holds it.
-    pub fn lane(&self, lane: usize) -> Pcg32 {
-        Pcg32::from_state(self.state.lane(lane), self.stream)
-    }
-
-    /// Put lane `lane`'s generator back after the scalar code drew from it.
-    pub fn set_lane(&mut self, lane: usize, rng: &Pcg32) {
-        self.state.set_lane(lane, rng.state());
     }
 
     /// Every lane's state, to be started later with [`Pcg32x8::start`].
@@ -219,6 +199,7 @@ mod tests {
     use super::*;
     use crate::sampling::{splitmix64, unit_f32};
     use rand_core::Rng;
+    use rand_pcg::Pcg32;
 
     const ALL: u32 = 0xff;
 
@@ -308,13 +289,14 @@ mod tests {
                 );
             }
         }
-        // A lane handed to scalar code and back goes on as the scalar one.
-        let mut one = lanes.lane(6);
-        assert_eq!(one.next_u32(), scalar[6].next_u32());
-        lanes.set_lane(6, &one);
+        // Every lane's state is its scalar generator's, and a lane started
+        // from a state goes on as the scalar generator with that state.
+        assert_eq!(lanes.states(), scalar.map(|rng| rng.state()));
+        let mut fresh = hashes[0].sample_rng(100, Stream::Path);
+        lanes.start(6, fresh.state());
         assert_eq!(
             lanes.next_u32(lane_mask(ALL)).to_array()[6],
-            scalar[6].next_u32()
+            fresh.next_u32()
         );
     }
 }

@@ -29,11 +29,16 @@ pub enum Stream {
 /// half of the output bits, which is what seeding needs.
 #[inline]
 pub fn splitmix64(x: u64) -> u64 {
-    let mut z = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
-    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    let mut z = x.wrapping_add(SPLITMIX_GAMMA);
+    z = (z ^ (z >> 30)).wrapping_mul(SPLITMIX_MIX[0]);
+    z = (z ^ (z >> 27)).wrapping_mul(SPLITMIX_MIX[1]);
     z ^ (z >> 31)
 }
+
+/// SplitMix64's golden ratio increment and its two mixing multipliers
+/// (shared with the eight-lane rounds of [`super::lanes`]).
+pub(super) const SPLITMIX_GAMMA: u64 = 0x9e37_79b9_7f4a_7c15;
+pub(super) const SPLITMIX_MIX: [u64; 2] = [0xbf58_476d_1ce4_e5b9, 0x94d0_49bb_1331_11eb];
 
 /// The generator for one sample's random choices of one kind.
 ///

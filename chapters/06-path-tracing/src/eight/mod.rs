@@ -107,7 +107,7 @@ impl Rows<'_, '_> {
                 if next == total || !self.window.has_room_for(next) {
                     break;
                 }
-                let start = self.starts.get(sampling, j, next);
+                let start = self.starts.get(sampling, j, next, total);
                 (column[lane], row[lane]) = (start.column, start.row);
                 self.paths.random.start(lane, start.state);
                 job[lane] = next;

@@ -23,8 +23,9 @@ pub(super) struct Starts {
     column: [f32; BLOCK],
     row: [f32; BLOCK],
     state: [u64; BLOCK],
-    /// The pixel whose samples were made last, with what they share.
-    pixel: Option<(usize, PixelSamples, PixelHash)>,
+    /// The pixel whose samples were made last, with what they share: its
+    /// hash, and its `PixelSamples` when its points are found one at a time.
+    pixel: Option<(usize, Option<PixelSamples>, PixelHash)>,
 }
 
 impl Default for Starts {
@@ -54,12 +55,12 @@ impl Starts {
         (self.first, self.len, self.pixel) = (0, 0, None);
     }
 
-    /// Sample `q` of row `j` (pixel `q / spp`'s sample `q % spp`), made in
-    /// a block with those after it when it is not made yet. Samples are
-    /// asked for in order.
-    pub fn get(&mut self, sampling: &Sampling, j: u32, q: usize) -> Start {
+    /// Sample `q` of row `j`'s `total` (pixel `q / spp`'s sample
+    /// `q % spp`), made in a block with those after it when it is not made
+    /// yet. Samples are asked for in order.
+    pub fn get(&mut self, sampling: &Sampling, j: u32, q: usize, total: usize) -> Start {
         if q >= self.first + self.len {
-            self.make(sampling, j, q);
+            self.make(sampling, j, q, total);
         }
         let k = q - self.first;
         Start {
@@ -69,32 +70,30 @@ impl Starts {
         }
     }
 
-    /// Samples `q .. q + BLOCK`, eight at a time, exactly as the scalar
-    /// tracer makes each one: its point from `PixelSamples::offset` and
-    /// its generator from `PixelHash::sample_rng(sample, Stream::Path)`.
-    fn make(&mut self, sampling: &Sampling, j: u32, q: usize) {
+    /// Samples `q ..` (up to [`BLOCK`] of them, and none past the row's
+    /// `total`), eight at a time, exactly as the scalar tracer makes each
+    /// one: its point from `PixelSamples::offset` and its generator from
+    /// `PixelHash::sample_rng(sample, Stream::Path)`.
+    fn make(&mut self, sampling: &Sampling, j: u32, q: usize, total: usize) {
         let spp = sampling.spp() as usize;
-        (self.first, self.len) = (q, BLOCK);
-        let any_hash = PixelHash::new(0, (0, 0));
-        for group in 0..BLOCK / LANES {
-            let mut hashes = [any_hash; LANES];
+        (self.first, self.len) = (q, BLOCK.min(total - q));
+        // The points of the patterns that draw them are found in lanes;
+        // the others one at a time, from what their pixel shares.
+        let in_lanes = sampling.offsets_in_lanes();
+        for group in 0..self.len.div_ceil(LANES) {
+            // (Every lane is set below.)
+            let mut hashes = [self.pixel_hash(sampling, j, q / spp, in_lanes); LANES];
             let (mut samples, mut pixels) = ([0u32; LANES], [0f32; LANES]);
             let (mut sx, mut sy) = ([0f32; LANES], [0f32; LANES]);
             for lane in 0..LANES {
-                let q = q + group * LANES + lane;
+                // Lanes past the row's end repeat its last sample, unread.
+                let q = (q + group * LANES + lane).min(total - 1);
                 let (pixel, sample) = (q / spp, (q % spp) as u32);
-                let (_, samples_of, hash) = match self.pixel {
-                    Some(ref p) if p.0 == pixel => p,
-                    _ => self.pixel.insert((
-                        pixel,
-                        sampling.pixel((pixel as u32, j)),
-                        PixelHash::new(sampling.seed(), (pixel as u32, j)),
-                    )),
-                };
-                if !sampling.offsets_in_lanes() {
+                hashes[lane] = self.pixel_hash(sampling, j, pixel, in_lanes);
+                if let Some((_, Some(samples_of), _)) = &self.pixel {
                     (sx[lane], sy[lane]) = samples_of.offset(sample);
                 }
-                (hashes[lane], samples[lane], pixels[lane]) = (*hash, sample, pixel as f32);
+                (samples[lane], pixels[lane]) = (sample, pixel as f32);
             }
             let hashed = sample_hashes(hashes, samples);
             let (sx, sy) = sampling
@@ -108,6 +107,27 @@ impl Starts {
             self.row[at.clone()].copy_from_slice(row.as_array_ref());
             let states = sample_rngs(hashed, Stream::Path).states();
             self.state[at].copy_from_slice(&states);
+        }
+    }
+
+    /// Pixel `pixel`'s hash (of row `j`), worked out once per pixel, with
+    /// its `PixelSamples` where the points are found one at a time.
+    fn pixel_hash(
+        &mut self,
+        sampling: &Sampling,
+        j: u32,
+        pixel: usize,
+        in_lanes: bool,
+    ) -> PixelHash {
+        match self.pixel {
+            Some((p, _, hash)) if p == pixel => hash,
+            _ => {
+                let at = (pixel as u32, j);
+                let samples = (!in_lanes).then(|| sampling.pixel(at));
+                let hash = PixelHash::new(sampling.seed(), at);
+                self.pixel = Some((pixel, samples, hash));
+                hash
+            }
         }
     }
 }
