@@ -111,6 +111,17 @@ impl Vec3x8 {
             z: mask.blend(a.z, b.z),
         }
     }
+
+    /// [`blend_back`] for each coordinate: `new` where `mask` is set and
+    /// `old` elsewhere, for a vector stored back where `old` was read from.
+    #[inline]
+    pub fn blend_back(mask: f32x8, new: Vec3x8, old: Vec3x8) -> Vec3x8 {
+        Vec3x8 {
+            x: blend_back(mask, new.x, old.x),
+            y: blend_back(mask, new.y, old.y),
+            z: blend_back(mask, new.z, old.z),
+        }
+    }
 }
 
 /// `-x`, exactly: only the sign bit changes, as in scalar code (`wide`'s
@@ -118,6 +129,24 @@ impl Vec3x8 {
 #[inline]
 pub fn negate(x: f32x8) -> f32x8 {
     x ^ f32x8::splat(-0.0)
+}
+
+/// Lane by lane, `new` where `mask` is set and `old` elsewhere, like
+/// `mask.blend(new, old)`, for a result stored back where `old` was read
+/// from: a lane state kept in memory from one step to the next, such as
+/// a path's between two bounces.
+///
+/// `old` is read through `black_box`. Without it, LLVM 21 and 22 turn a
+/// blend of a value loaded from memory, stored back to the same place,
+/// into one masked store (`vmaskmovps`). AMD's Zen 1–3 processors run
+/// that instruction in microcode, many times slower than a blend and a
+/// store: on this project's Zen 3 machine it made chapter 6's eight lanes
+/// slower than one path at a time. (LLVM stops doing it on those
+/// processors after version 22, in its pull request 214187.) The lanes
+/// chosen are the same either way.
+#[inline]
+pub fn blend_back(mask: f32x8, new: f32x8, old: f32x8) -> f32x8 {
+    mask.blend(new, std::hint::black_box(old))
 }
 
 /// A mask from the low eight bits of `bits` (lane `l` set where bit `l`
@@ -310,6 +339,21 @@ mod tests {
         let minus = negate(f32x8::splat(0.0)).as_array_ref()[0];
         assert!(minus == 0.0 && minus.is_sign_negative());
         assert!((-Vec3x8::ZERO).lane(3).x.is_sign_negative());
+    }
+
+    #[test]
+    fn a_blend_stored_back_sets_the_masked_lanes_and_keeps_the_others_to_the_bit() {
+        let old = f32x8::new([1.5, -0.0, f32::NAN, f32::INFINITY, 7.0, 0.0, -3.25, 1e-40]);
+        let new = f32x8::new([0.0, 2.0, -0.0, 4.0, f32::NAN, -6.0, 7.5, 8.0]);
+        for bits in [0, 0b0110_1001, 0b1001_0110, 0xff] {
+            let mask = mask_from_bits(bits);
+            let kept = blend_back(mask, new, old).to_array().map(f32::to_bits);
+            let expected: [u32; LANES] = std::array::from_fn(|l| {
+                let from = if bits >> l & 1 == 1 { new } else { old };
+                from.as_array_ref()[l].to_bits()
+            });
+            assert_eq!(kept, expected, "mask {bits:08b}");
+        }
     }
 
     #[test]

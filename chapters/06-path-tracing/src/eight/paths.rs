@@ -21,7 +21,7 @@ use wide::{CmpGt, CmpLe, CmpLt, CmpNe, f32x8};
 use super::scene::{Hits, SceneX8, Surfaces};
 use super::terms::TermsX8;
 use crate::integrator::{Lobe, PathTracer};
-use raylab::lanes::{LANES, Vec3x8, lanes_of, mask_from_bits, negate};
+use raylab::lanes::{LANES, Vec3x8, blend_back, lanes_of, mask_from_bits, negate};
 use raylab::sampling::lanes::{Pcg32x8, lane_mask, sample_hashes, sample_rngs};
 use raylab::sampling::{PixelHash, Stream};
 
@@ -78,14 +78,14 @@ impl Paths {
     #[inline]
     pub fn start(&mut self, mask: f32x8, origin: Vec3x8, direction: Vec3x8) {
         let zero = f32x8::ZERO;
-        self.origin = Vec3x8::select(mask, origin, self.origin);
-        self.direction = Vec3x8::select(mask, direction, self.direction);
-        self.throughput = Vec3x8::select(mask, Vec3x8::ONE, self.throughput);
+        self.origin = Vec3x8::blend_back(mask, origin, self.origin);
+        self.direction = Vec3x8::blend_back(mask, direction, self.direction);
+        self.throughput = Vec3x8::blend_back(mask, Vec3x8::ONE, self.throughput);
         self.terms.clear(mask);
-        self.diffuse_bounces = mask.blend(zero, self.diffuse_bounces);
-        self.after_diffuse = mask.blend(zero, self.after_diffuse);
-        self.hits = mask.blend(zero, self.hits);
-        self.rays = mask.blend(zero, self.rays);
+        self.diffuse_bounces = blend_back(mask, zero, self.diffuse_bounces);
+        self.after_diffuse = blend_back(mask, zero, self.after_diffuse);
+        self.hits = blend_back(mask, zero, self.hits);
+        self.rays = blend_back(mask, zero, self.rays);
         self.active |= mask;
     }
 
@@ -96,8 +96,8 @@ impl Paths {
     pub fn bounce(&mut self, tracer: &PathTracer, scene: &SceneX8) -> f32x8 {
         let active = self.active;
         let one = f32x8::ONE;
-        self.hits = active.blend(self.hits + one, self.hits);
-        self.rays = active.blend(self.rays + one, self.rays);
+        self.hits = blend_back(active, self.hits + one, self.hits);
+        self.rays = blend_back(active, self.rays + one, self.rays);
         let (o, d) = (self.origin, self.direction);
         let hits = scene.nearest(o, d);
         // Mask: one hit more than the depth allows, where only whether the
@@ -196,10 +196,10 @@ impl Paths {
             }
             let direction = direction.normalize();
             let origin = s.point + direction * tracer.epsilon;
-            self.origin = Vec3x8::select(specular, origin, self.origin);
-            self.direction = Vec3x8::select(specular, direction, self.direction);
+            self.origin = Vec3x8::blend_back(specular, origin, self.origin);
+            self.direction = Vec3x8::blend_back(specular, direction, self.direction);
         }
-        self.after_diffuse = shading.blend(diffuse, self.after_diffuse);
+        self.after_diffuse = blend_back(shading, diffuse, self.after_diffuse);
     }
 
     /// The diffuse vertices (`diffuse`): the sun by next-event estimation,
@@ -227,7 +227,7 @@ impl Paths {
         // Mask: the surface faces the sun, so a shadow ray is traced.
         let lit = diffuse & cos.cmp_gt(f32x8::ZERO);
         if lit.any() {
-            self.rays = lit.blend(self.rays + f32x8::ONE, self.rays);
+            self.rays = blend_back(lit, self.rays + f32x8::ONE, self.rays);
             let origin = s.point + to_sun * tracer.epsilon;
             let open = lit & !scene.any(origin, to_sun, lit);
             let light = (s.albedo * FRAC_1_PI * sun.irradiance).scale(cos);
@@ -237,12 +237,12 @@ impl Paths {
         if let Some(map) = tracer.caustics {
             self.caustics(tracer, map, s, diffuse & s.on_ground);
         }
-        self.throughput = Vec3x8::select(diffuse, self.throughput * s.albedo, self.throughput);
-        self.diffuse_bounces = diffuse.blend(k + f32x8::ONE, k);
+        self.throughput = Vec3x8::blend_back(diffuse, self.throughput * s.albedo, self.throughput);
+        self.diffuse_bounces = blend_back(diffuse, k + f32x8::ONE, k);
         let direction = self.cosine_direction(nf, diffuse);
         let origin = s.point + nf * tracer.epsilon;
-        self.origin = Vec3x8::select(diffuse, origin, self.origin);
-        self.direction = Vec3x8::select(diffuse, direction, self.direction);
+        self.origin = Vec3x8::blend_back(diffuse, origin, self.origin);
+        self.direction = Vec3x8::blend_back(diffuse, direction, self.direction);
     }
 
     /// The caustic light the photons left at the ground points of `ground`

@@ -19,7 +19,7 @@ pub struct TermsX8 {
 /// only the light its own path found, as the scalar `+=` does.
 #[inline]
 fn add(term: &mut Vec3x8, mask: f32x8, light: Vec3x8) {
-    *term = Vec3x8::select(mask, *term + light, *term);
+    *term = Vec3x8::blend_back(mask, *term + light, *term);
 }
 
 impl TermsX8 {
@@ -66,7 +66,7 @@ impl TermsX8 {
             &mut self.indirect,
             &mut self.caustics,
         ] {
-            *term = Vec3x8::select(mask, Vec3x8::ZERO, *term);
+            *term = Vec3x8::blend_back(mask, Vec3x8::ZERO, *term);
         }
     }
 
