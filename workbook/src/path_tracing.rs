@@ -316,7 +316,7 @@ fn terms_figure(
     masks: &GroundMasks,
     scene: &Scene,
 ) -> Result<Vec<PathBuf>, JobError> {
-    let images: Vec<RgbImage> = path.terms.iter().map(|t| t.to_srgb8()).collect();
+    let images: Vec<RgbImage> = path.terms().iter().map(|t| t.to_srgb8()).collect();
     let total = path.image.to_srgb8();
     let mut tiles: Vec<(String, &RgbImage)> = Terms::NAMES
         .iter()
@@ -333,9 +333,9 @@ fn terms_figure(
     );
 
     let count = |m: &[bool]| m.iter().filter(|&&b| b).count();
-    let whole = shares(&path.terms, None);
-    let shadow = shares(&path.terms, Some(&masks.shadowed));
-    let lit = shares(&path.terms, Some(&masks.lit));
+    let whole = shares(path.terms(), None);
+    let shadow = shares(path.terms(), Some(&masks.shadowed));
+    let lit = shares(path.terms(), Some(&masks.lit));
     let mut text = format!(
         "| term | whole image ({} pixels) | ground in the sun ({} pixels) | ground in the sun's \
          shadow ({} pixels) |\n|---|---:|---:|---:|\n",
@@ -379,7 +379,7 @@ fn terms_figure(
     );
     let received =
         |image: &LinearImage, mask: &[bool]| mean_over_albedo(image, &masks.albedo, mask);
-    let sky_term = &path.terms[2];
+    let sky_term = &path.terms()[2];
     if let Some(sky_lit) = received(sky_term, &masks.lit) {
         let _ = writeln!(
             text,
@@ -609,7 +609,7 @@ fn caustic_figure(
     let flags = with(size_flags(w, h, CAUSTIC_SPP), &[&scene_flag]);
     let eye_only = path_render(&flags, quiet)?;
     let traced = path_render(&with(flags, &["--caustics"]), quiet)?;
-    let caustic = &traced.terms[4];
+    let caustic = &traced.terms()[4];
     // Crop around the brightest caustic pixel.
     let (k, _) = caustic
         .pixels()

@@ -35,6 +35,9 @@ pub struct PathSettings {
     pub photons_per_sphere: u32,
     /// `--tracer`: one path at a time, or eight (the same bytes).
     pub tracer: Tracer,
+    /// Whether the five term images are made: not with `--no-diagrams`,
+    /// which writes only the render and its variance.
+    pub keep_terms: bool,
 }
 
 /// `--tracer`: how the paths are traced. Both give the same image to the
@@ -57,8 +60,9 @@ pub struct PathRender {
     /// Each pixel's variance of that mean, estimated from its samples:
     /// `s² / N`; all zero with one sample per pixel, where it is unknown.
     pub variance: LinearImage,
-    /// The image split by term, in the order of [`Terms::NAMES`].
-    pub terms: [LinearImage; 5],
+    /// The image split by term, in the order of [`Terms::NAMES`], when
+    /// [`PathSettings::keep_terms`] asked for it.
+    pub terms: Option<[LinearImage; 5]>,
     pub paths: u64,
     /// Every segment of every path (from the eye and after each bounce),
     /// and every shadow ray.
@@ -208,60 +212,119 @@ pub fn render(
     tracer.caustics = map.as_ref().map(|(m, _)| m);
     let eye_start = Instant::now();
     let (width, height) = (settings.width as usize, settings.height as usize);
+    let mut images = Images::new(width * height, settings.keep_terms);
     // ANCHOR: rows
-    // Every pixel on every core, a row at least per task; collected by the
-    // workers straight into place, so no thread but theirs touches the
-    // buffer first.
-    let pixels: Vec<PixelSums> = match settings.tracer {
-        Tracer::Eight => crate::eight::render_pixels(&tracer, camera, settings, progress),
-        Tracer::Scalar => (0..width * height)
-            .into_par_iter()
-            .with_min_len(width)
-            .map(|k| {
-                let (i, j) = (k % width, k / width);
-                if i + 1 == width {
-                    progress.inc(1);
+    // Every row on every core, each written by its worker straight into
+    // its place in the output images.
+    let rows = images.rows(width).into_par_iter().enumerate();
+    let (rays, non_finite) = match settings.tracer {
+        Tracer::Eight => crate::eight::render_rows(&tracer, camera, settings, progress, rows),
+        Tracer::Scalar => rows
+            .map(|(j, mut row)| {
+                for i in 0..width {
+                    let pixel = (i as u32, j as u32);
+                    row.set(i, render_pixel(&tracer, camera, settings, pixel));
                 }
-                render_pixel(&tracer, camera, settings, (i as u32, j as u32))
+                progress.inc(1);
+                (row.rays, row.non_finite)
             })
-            .collect(),
+            .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1)),
     };
     // ANCHOR_END: rows
     let elapsed = eye_start.elapsed();
-    // Each output image is gathered on every core: a fresh 800 × 600 image
-    // is 7.7 MB whose pages the kernel must clear as they are first written,
-    // and one thread doing that for all seven took longer than the render
-    // of a few paths per pixel.
-    let image = |f: &(dyn Fn(&PixelSums) -> Vec3 + Sync)| {
-        LinearImage::from_pixels(
-            settings.width,
-            settings.height,
-            pixels.par_iter().map(f).collect(),
-        )
-    };
-    // One field each (not `as_array()[t]`, which would copy all five
-    // terms of every pixel to keep one).
-    let terms = [
-        image(&|p| p.terms.seen),
-        image(&|p| p.terms.sun_direct),
-        image(&|p| p.terms.sky_direct),
-        image(&|p| p.terms.indirect),
-        image(&|p| p.terms.caustics),
-    ];
+    let image = |pixels| LinearImage::from_pixels(settings.width, settings.height, pixels);
     PathRender {
         settings: *settings,
-        image: image(&|p| p.mean),
-        variance: image(&|p| p.variance),
-        terms,
+        image: image(images.mean),
+        variance: image(images.variance),
+        terms: images.terms.map(|terms| terms.map(image)),
         paths: (width * height) as u64 * u64::from(settings.sampling.spp()),
-        rays: pixels.iter().map(|p| p.rays).sum(),
+        rays,
         elapsed,
-        non_finite: pixels.iter().map(|p| p.non_finite).sum(),
+        non_finite,
         caustics: map.map(|(_, stats)| stats),
     }
 }
 
+/// The images a render fills in: each pixel's mean, the variance of that
+/// mean and, when kept, its five terms.
+struct Images {
+    mean: Vec<Vec3>,
+    variance: Vec<Vec3>,
+    terms: Option<[Vec<Vec3>; 5]>,
+}
+
+impl Images {
+    /// `pixels` black pixels in each image. The memory comes zeroed from
+    /// the kernel, page by page as the workers first write to it, so no
+    /// thread spends the time to clear it beforehand.
+    fn new(pixels: usize, keep_terms: bool) -> Images {
+        let black = || vec![Vec3::ZERO; pixels];
+        Images {
+            mean: black(),
+            variance: black(),
+            terms: keep_terms.then(|| std::array::from_fn(|_| black())),
+        }
+    }
+
+    /// Each row's share of every image, `width` pixels each.
+    fn rows(&mut self, width: usize) -> Vec<RowImages<'_>> {
+        let mut term_rows =
+            (self.terms.as_mut()).map(|terms| terms.each_mut().map(|term| term.chunks_mut(width)));
+        let mut next_term_rows = move || {
+            let rows = term_rows.as_mut()?;
+            Some(
+                rows.each_mut()
+                    .map(|r| r.next().expect("every image has the rows")),
+            )
+        };
+        (self.mean.chunks_mut(width))
+            .zip(self.variance.chunks_mut(width))
+            .map(|(mean, variance)| RowImages {
+                mean,
+                variance,
+                terms: next_term_rows(),
+                rays: 0,
+                non_finite: 0,
+            })
+            .collect()
+    }
+}
+
+/// One image row's pixels in each output image, filled in by one task,
+/// and the rays and non-finite samples of its pixels.
+pub(crate) struct RowImages<'a> {
+    mean: &'a mut [Vec3],
+    variance: &'a mut [Vec3],
+    terms: Option<[&'a mut [Vec3]; 5]>,
+    pub rays: u64,
+    pub non_finite: u64,
+}
+
+impl RowImages<'_> {
+    /// Pixel `i` of the row, from its sums.
+    pub(crate) fn set(&mut self, i: usize, pixel: PixelSums) {
+        self.mean[i] = pixel.mean;
+        self.variance[i] = pixel.variance;
+        if let Some(terms) = &mut self.terms {
+            for (image, term) in terms.iter_mut().zip(pixel.terms.as_array()) {
+                image[i] = term;
+            }
+        }
+        self.rays += pixel.rays;
+        self.non_finite += pixel.non_finite;
+    }
+}
+
 impl PathRender {
+    /// The five term images, in the order of [`Terms::NAMES`]. Only a
+    /// render whose settings kept them has them (`keep_terms`).
+    pub fn terms(&self) -> &[LinearImage; 5] {
+        self.terms
+            .as_ref()
+            .expect("the render was asked to keep its terms (PathSettings::keep_terms)")
+    }
+
     pub fn paths_per_second(&self) -> f64 {
         self.paths as f64 / self.elapsed.as_secs_f64().max(1e-9)
     }

@@ -120,6 +120,7 @@ pub fn settings(options: &Options, flags: &Flags) -> Result<PathSettings, CliErr
         caustics: flags.caustics,
         photons_per_sphere: crate::caustics::PHOTONS_PER_SPHERE,
         tracer: flags.tracer,
+        keep_terms: !options.no_diagrams,
     })
 }
 
@@ -170,9 +171,9 @@ pub fn run(options: &Options, flags: &Flags) -> Result<Report, CliError> {
     if settings.sampling.spp() > 1 {
         files.push(("variance.exr".to_owned(), &rendered.variance));
     }
-    if !options.no_diagrams {
+    if let Some(terms) = &rendered.terms {
         for extension in ["exr", "png"] {
-            for (name, image) in TERM_FILES.iter().zip(&rendered.terms) {
+            for (name, image) in TERM_FILES.iter().zip(terms) {
                 files.push((format!("{name}.{extension}"), image));
             }
         }

@@ -23,6 +23,7 @@ fn settings(width: u32, height: u32, spp: u32) -> PathSettings {
         caustics: false,
         photons_per_sphere: 4_000,
         tracer: Tracer::Scalar,
+        keep_terms: true,
     }
 }
 
@@ -49,8 +50,8 @@ fn assert_same_renders(scalar: &PathRender, eight: &PathRender, what: &str) {
     );
     for (t, name) in ch06_path_tracing::Terms::NAMES.iter().enumerate() {
         assert_eq!(
-            bits(&scalar.terms[t]),
-            bits(&eight.terms[t]),
+            bits(&scalar.terms()[t]),
+            bits(&eight.terms()[t]),
             "{what}: the {name} terms differ"
         );
     }

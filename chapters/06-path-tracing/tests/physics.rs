@@ -24,6 +24,7 @@ fn settings(width: u32, height: u32, spp: u32, seed: u64) -> PathSettings {
         caustics: false,
         photons_per_sphere: 50_000,
         tracer: Tracer::default(),
+        keep_terms: true,
     }
 }
 
@@ -262,12 +263,34 @@ fn the_terms_sum_to_the_image() {
             ..settings(40, 30, 16, 4)
         });
         for (p, total) in rendered.image.pixels().iter().enumerate() {
-            let sum: Vec3 = rendered.terms.iter().map(|t| t.pixels()[p]).sum();
+            let sum: Vec3 = rendered.terms().iter().map(|t| t.pixels()[p]).sum();
             assert!(
                 sum.abs_diff_eq(*total, 1e-5 * (1.0 + total.max_element())),
                 "pixel {p}: terms {sum} vs image {total}"
             );
         }
+    }
+}
+
+#[test]
+fn a_render_without_its_terms_makes_the_same_image_and_variance() {
+    for tracer in [Tracer::Scalar, Tracer::Eight] {
+        let with = lab(&PathSettings {
+            tracer,
+            ..settings(41, 7, 4, 2)
+        });
+        let without = lab(&PathSettings {
+            tracer,
+            keep_terms: false,
+            ..settings(41, 7, 4, 2)
+        });
+        assert!(with.terms.is_some() && without.terms.is_none());
+        assert_eq!(with.image, without.image);
+        assert_eq!(with.variance, without.variance);
+        assert_eq!(
+            (with.rays, with.non_finite),
+            (without.rays, without.non_finite)
+        );
     }
 }
 
@@ -290,16 +313,24 @@ fn with_caustics_no_light_is_counted_twice() {
         });
         // The light seen directly and the sky's light do not change at all.
         for t in [0, 2] {
-            assert_eq!(with.terms[t], without.terms[t], "{}", names[t]);
+            assert_eq!(with.terms()[t], without.terms()[t], "{}", names[t]);
         }
-        assert_eq!(without.terms[4].pixels().iter().sum::<Vec3>(), Vec3::ZERO);
-        let caustic: f32 = with.terms[4].pixels().iter().map(|p| p.element_sum()).sum();
+        assert_eq!(without.terms()[4].pixels().iter().sum::<Vec3>(), Vec3::ZERO);
+        let caustic: f32 = with.terms()[4]
+            .pixels()
+            .iter()
+            .map(|p| p.element_sum())
+            .sum();
         assert!(caustic > 0.0, "the photons find the caustic");
         // The sun through mirrors and glass, found by the eye's paths only
         // with a disc, is no longer counted by them.
         let (mut less, mut same) = (0, 0);
         for t in [1, 3] {
-            for (a, b) in with.terms[t].pixels().iter().zip(without.terms[t].pixels()) {
+            for (a, b) in with.terms()[t]
+                .pixels()
+                .iter()
+                .zip(without.terms()[t].pixels())
+            {
                 assert!(a.cmple(*b + 1e-6).all(), "{}: {a} > {b}", names[t]);
                 if a == b {
                     same += 1;
@@ -332,7 +363,7 @@ fn no_pixel_term_or_variance_is_ever_nan_or_infinite() {
             assert_eq!(rendered.non_finite, 0, "{sun_size:?} {materials:?}");
             assert!(rendered.image.is_finite());
             assert!(rendered.variance.is_finite());
-            assert!(rendered.terms.iter().all(|t| t.is_finite()));
+            assert!(rendered.terms().iter().all(|t| t.is_finite()));
         }
     }
 }

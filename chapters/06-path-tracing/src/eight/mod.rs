@@ -28,33 +28,27 @@ use rayon::prelude::*;
 use wide::f32x8;
 
 use crate::integrator::PathTracer;
-use crate::render::{PathSettings, PixelSums};
+use crate::render::{PathSettings, RowImages};
 use paths::Paths;
 use raylab::lanes::{CameraX8, LANES, lanes_of, mask_from_bits};
 use scene::SceneX8;
 use starts::Starts;
 use window::Window;
 
-/// Every pixel's sums, one image row per task, ticking `progress` per row.
-pub(crate) fn render_pixels(
+/// Every row of `rows` (row `j`'s images) on every core, ticking
+/// `progress` per row; returns the rays traced and the non-finite samples.
+pub(crate) fn render_rows<'i>(
     tracer: &PathTracer,
     camera: &Camera,
     settings: &PathSettings,
     progress: &ProgressBar,
-) -> Vec<PixelSums> {
-    let (width, height) = (settings.width as usize, settings.height as usize);
+    rows: impl IndexedParallelIterator<Item = (usize, RowImages<'i>)>,
+) -> (u64, u64) {
     let scene = SceneX8::new(tracer.scene);
     let camera = CameraX8::new(camera, settings.width, settings.height);
-    // The buffer is first written by the workers (each page cleared by
-    // the core that fills it), then each row is rendered into its place.
-    let mut pixels: Vec<PixelSums> = (0..width * height)
-        .into_par_iter()
-        .with_min_len(width)
-        .map(|_| PixelSums::default())
-        .collect();
-    pixels.par_chunks_mut(width).enumerate().for_each_init(
+    rows.map_init(
         || (Paths::default(), Window::default(), Starts::default()),
-        |(paths, window, starts), (j, row)| {
+        |(paths, window, starts), (j, mut row)| {
             let mut rows = Rows {
                 tracer,
                 scene: &scene,
@@ -64,11 +58,12 @@ pub(crate) fn render_pixels(
                 window,
                 starts,
             };
-            rows.render_row(j as u32, row);
+            rows.render_row(j as u32, &mut row);
             progress.inc(1);
+            (row.rays, row.non_finite)
         },
-    );
-    pixels
+    )
+    .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1))
 }
 
 /// What one task needs to trace rows: the scene and camera in lanes, and
@@ -89,10 +84,10 @@ impl Rows<'_, '_> {
     /// Row `j`'s pixels into `out`: sample `q` of the row is pixel
     /// `q / spp`'s sample `q % spp`; the lanes take them in that order, a
     /// lane taking the next one as soon as its path ends.
-    fn render_row(&mut self, j: u32, out: &mut [PixelSums]) {
+    fn render_row(&mut self, j: u32, out: &mut RowImages) {
         let sampling = &self.settings.sampling;
         let spp = sampling.spp() as usize;
-        let total = out.len() * spp;
+        let total = self.settings.width as usize * spp;
         let mut job = [0usize; LANES];
         let mut next = 0;
         self.starts.clear();

@@ -7,7 +7,7 @@
 //! sample before it has finished, and then it is summed.
 
 use crate::integrator::Terms;
-use crate::render::{PixelSums, SampleSums};
+use crate::render::{RowImages, SampleSums};
 
 /// How many samples may be taken ahead of the oldest unfinished one. A
 /// path takes at most `max_depth + 1` bounces, in each of which the other
@@ -74,7 +74,7 @@ impl Window {
     /// Sum every finished sample whose predecessors are all summed, in
     /// sample order, writing each pixel (of `spp` samples) into `out` once
     /// its last sample is in.
-    pub fn sum_in_order(&mut self, spp: usize, out: &mut [PixelSums]) {
+    pub fn sum_in_order(&mut self, spp: usize, out: &mut RowImages) {
         loop {
             let slot = &mut self.slots[self.summed % WINDOW];
             if !slot.finished {
@@ -86,7 +86,7 @@ impl Window {
             self.summed += 1;
             if self.summed.is_multiple_of(spp) {
                 let pixel = std::mem::take(&mut self.pixel);
-                out[self.summed / spp - 1] = pixel.finish(spp as u32);
+                out.set(self.summed / spp - 1, pixel.finish(spp as u32));
             }
         }
     }
