@@ -11,7 +11,7 @@ use raylab_cli::output::save_png;
 use raylab_cli::{self as cli, CliError, Options, Program};
 use rayon::prelude::*;
 
-use crate::exr::save_exr;
+use crate::exr::{Packing, save_exr};
 use crate::integrator::{Materials, Terms};
 use crate::render::{PathRender, PathSettings, Tracer, render};
 use crate::sun::MAX_SUN_SIZE;
@@ -124,6 +124,24 @@ pub fn settings(options: &Options, flags: &Flags) -> Result<PathSettings, CliErr
     })
 }
 
+/// What a file is written as.
+#[derive(Clone, Copy)]
+enum Format {
+    /// 8-bit sRGB, for looking at.
+    Png,
+    /// 32-bit float linear light, for measuring.
+    Exr(Packing),
+}
+
+impl Format {
+    fn extension(self) -> &'static str {
+        match self {
+            Format::Png => "png",
+            Format::Exr(_) => "exr",
+        }
+    }
+}
+
 /// What a run made.
 #[derive(Debug)]
 pub struct Report {
@@ -165,27 +183,35 @@ pub fn run(options: &Options, flags: &Flags) -> Result<Report, CliError> {
     // 800 × 600 EXR takes as long to write as a few paths per pixel take to
     // render.
     let mut files = vec![
-        ("render.png".to_owned(), &rendered.image),
-        ("render.exr".to_owned(), &rendered.image),
+        ("render.png".to_owned(), &rendered.image, Format::Png),
+        (
+            "render.exr".to_owned(),
+            &rendered.image,
+            Format::Exr(Packing::Raw),
+        ),
     ];
     if settings.sampling.spp() > 1 {
-        files.push(("variance.exr".to_owned(), &rendered.variance));
+        let variance = &rendered.variance;
+        files.push((
+            "variance.exr".to_owned(),
+            variance,
+            Format::Exr(Packing::Raw),
+        ));
     }
     if let Some(terms) = &rendered.terms {
-        for extension in ["exr", "png"] {
+        for format in [Format::Exr(Packing::RunLength), Format::Png] {
             for (name, image) in TERM_FILES.iter().zip(terms) {
-                files.push((format!("{name}.{extension}"), image));
+                files.push((format!("{name}.{}", format.extension()), image, format));
             }
         }
     }
     let written = files
         .par_iter()
-        .map(|(name, image)| {
+        .map(|(name, image, format)| {
             let path = out_dir.join(name);
-            if name.ends_with(".png") {
-                save_png(&image.to_srgb8(), &path)
-            } else {
-                save_exr(image, &path)
+            match *format {
+                Format::Png => save_png(&image.to_srgb8(), &path),
+                Format::Exr(packing) => save_exr(image, &path, packing),
             }
             .map(|()| path)
         })
