@@ -95,9 +95,9 @@ impl Paths {
     /// are no longer active; their terms and rays are final).
     pub fn bounce(&mut self, tracer: &PathTracer, scene: &SceneX8) -> f32x8 {
         let active = self.active;
-        let one = f32x8::ONE;
-        self.hits = blend_back(active, self.hits + one, self.hits);
-        self.rays = blend_back(active, self.rays + one, self.rays);
+        // One more hit asked for and one more ray traced on each active path.
+        self.hits += ones(active);
+        self.rays += ones(active);
         let (o, d) = (self.origin, self.direction);
         let hits = scene.nearest(o, d);
         // Mask: one hit more than the depth allows, where only whether the
@@ -179,9 +179,11 @@ impl Paths {
         let (mirror, refraction) = (mask_from_bits(mirror), mask_from_bits(refraction));
         let diffuse = shading & !(mirror | refraction);
         let specular = shading & (mirror | refraction);
-        if diffuse.any() {
-            self.diffuse(tracer, scene, s, diffuse);
-        }
+        // Where each path goes next, from a diffuse or a specular vertex.
+        let from_diffuse = diffuse
+            .any()
+            .then(|| self.diffuse(tracer, scene, s, diffuse));
+        let mut from_specular = None;
         if specular.any() {
             // Mirror: reflect(d, nf) = d − 2 (d·nf) nf.
             let reflected = d - nf.scale(f32x8::splat(2.0) * d.dot(nf));
@@ -196,15 +198,34 @@ impl Paths {
             }
             let direction = direction.normalize();
             let origin = s.point + direction * tracer.epsilon;
-            self.origin = Vec3x8::blend_back(specular, origin, self.origin);
-            self.direction = Vec3x8::blend_back(specular, direction, self.direction);
+            from_specular = Some((origin, direction));
         }
-        self.after_diffuse = blend_back(shading, diffuse, self.after_diffuse);
+        // Stored whole, not blended into the old numbers: a lane that is
+        // neither diffuse nor specular here has ended, and its numbers are
+        // stale until a new path starts in it.
+        let (origin, direction) = match (from_diffuse, from_specular) {
+            (Some(d), Some(s)) => (
+                Vec3x8::select(diffuse, d.0, s.0),
+                Vec3x8::select(diffuse, d.1, s.1),
+            ),
+            (Some(next), None) | (None, Some(next)) => next,
+            (None, None) => (self.origin, self.direction),
+        };
+        self.origin = origin;
+        self.direction = direction;
+        self.after_diffuse = diffuse;
     }
 
     /// The diffuse vertices (`diffuse`): the sun by next-event estimation,
-    /// the caustics on the ground, and a cosine-distributed new direction.
-    fn diffuse(&mut self, tracer: &PathTracer, scene: &SceneX8, s: &Surfaces, diffuse: f32x8) {
+    /// the caustics on the ground, and a cosine-distributed new direction,
+    /// returned with the point it starts from.
+    fn diffuse(
+        &mut self,
+        tracer: &PathTracer,
+        scene: &SceneX8,
+        s: &Surfaces,
+        diffuse: f32x8,
+    ) -> (Vec3x8, Vec3x8) {
         let sun = &tracer.sun;
         let nf = s.facing_normal;
         let k = self.diffuse_bounces;
@@ -227,7 +248,7 @@ impl Paths {
         // Mask: the surface faces the sun, so a shadow ray is traced.
         let lit = diffuse & cos.cmp_gt(f32x8::ZERO);
         if lit.any() {
-            self.rays = blend_back(lit, self.rays + f32x8::ONE, self.rays);
+            self.rays += ones(lit);
             let origin = s.point + to_sun * tracer.epsilon;
             let open = lit & !scene.any(origin, to_sun, lit);
             let light = (s.albedo * FRAC_1_PI * sun.irradiance).scale(cos);
@@ -237,12 +258,12 @@ impl Paths {
         if let Some(map) = tracer.caustics {
             self.caustics(tracer, map, s, diffuse & s.on_ground);
         }
-        self.throughput = Vec3x8::blend_back(diffuse, self.throughput * s.albedo, self.throughput);
-        self.diffuse_bounces = blend_back(diffuse, k + f32x8::ONE, k);
+        // The albedo where the path scattered diffusely, 1 (which leaves
+        // a number exactly as it is) where it did not.
+        self.throughput = self.throughput * Vec3x8::select(diffuse, s.albedo, Vec3x8::ONE);
+        self.diffuse_bounces = k + ones(diffuse);
         let direction = self.cosine_direction(nf, diffuse);
-        let origin = s.point + nf * tracer.epsilon;
-        self.origin = Vec3x8::blend_back(diffuse, origin, self.origin);
-        self.direction = Vec3x8::blend_back(diffuse, direction, self.direction);
+        (s.point + nf * tracer.epsilon, direction)
     }
 
     /// The caustic light the photons left at the ground points of `ground`
@@ -294,6 +315,13 @@ impl Paths {
         t.scale(x) + b.scale(y) + n.scale(z)
     }
     // ANCHOR_END: cosine
+}
+
+/// 1 in each lane of `mask`, +0 elsewhere: what a count goes up by. A count
+/// is a whole number from +0, so adding +0 leaves it as it is, to the bit.
+#[inline]
+fn ones(mask: f32x8) -> f32x8 {
+    mask & f32x8::ONE
 }
 
 /// The sky's radiance along eight unit directions, as `Sky::radiance`.

@@ -16,10 +16,12 @@ pub struct TermsX8 {
 }
 
 /// `term + light` in the lanes of `mask`, `term` elsewhere: each lane adds
-/// only the light its own path found, as the scalar `+=` does.
+/// only the light its own path found, as the scalar `+=` does. The other
+/// lanes add +0: a term starts at +0 and only grows by sums, so it is
+/// never −0, and adding +0 leaves it as it is, to the bit.
 #[inline]
 fn add(term: &mut Vec3x8, mask: f32x8, light: Vec3x8) {
-    *term = Vec3x8::blend_back(mask, *term + light, *term);
+    *term = *term + Vec3x8::select(mask, light, Vec3x8::ZERO);
 }
 
 impl TermsX8 {
