@@ -131,23 +131,27 @@ pub fn negate(x: f32x8) -> f32x8 {
     x ^ f32x8::splat(-0.0)
 }
 
+// ANCHOR: blend_back
 /// Lane by lane, `new` where `mask` is set and `old` elsewhere, like
 /// `mask.blend(new, old)`, for a result stored back where `old` was read
 /// from: a lane state kept in memory from one step to the next, such as
 /// a path's between two bounces.
 ///
-/// `old` is read through `black_box`. Without it, LLVM 21 and 22 turn a
-/// blend of a value loaded from memory, stored back to the same place,
-/// into one masked store (`vmaskmovps`). AMD's Zen 1–3 processors run
-/// that instruction in microcode, many times slower than a blend and a
-/// store: on this project's Zen 3 machine it made chapter 6's eight lanes
-/// slower than one path at a time. (LLVM stops doing it on those
-/// processors after version 22, in its pull request 214187.) The lanes
-/// chosen are the same either way.
+/// `old` is read through `black_box`. Without it, LLVM (version 22 in Rust
+/// 1.95) turns a blend of a value loaded from memory, stored back to the
+/// same place, into one masked store (`vmaskmovps`). AMD's Zen 1–3
+/// processors run that instruction in microcode, many times slower than a
+/// blend and a store: on this project's Zen 3 machine it made chapter 6's
+/// eight lanes slower than one path at a time. (LLVM's pull request
+/// 214187, of August 2026, stops that on those processors.) The lanes
+/// chosen are the same either way. Where no lane needs its old value, a
+/// whole store needs no blend at all, and where a count grows, a sum
+/// (chapter 6's `Paths` does both).
 #[inline]
 pub fn blend_back(mask: f32x8, new: f32x8, old: f32x8) -> f32x8 {
     mask.blend(new, std::hint::black_box(old))
 }
+// ANCHOR_END: blend_back
 
 /// A mask from the low eight bits of `bits` (lane `l` set where bit `l`
 /// is): the form `move_mask` reads a mask out in, turned back.

@@ -180,15 +180,23 @@ impl Lab {
             package = exercise.package,
             version = self.version,
         );
-        for (name, spec) in deps {
-            let spec = if spec.get("workspace").and_then(|w| w.as_bool()) == Some(true) {
-                shared
-                    .get(name)
-                    .ok_or_else(|| bad(&root_path, &format!("no workspace dependency `{name}`")))?
-            } else {
-                spec
-            };
-            text.push_str(&format!("{name} = {}\n", self.resolve(exercise, spec)));
+        // The chapter's own unit tests come with its sources, so the
+        // libraries they use come along too.
+        let dev_deps = chapter.get("dev-dependencies").and_then(|d| d.as_table());
+        let sections = [("", Some(deps)), ("\n[dev-dependencies]\n", dev_deps)];
+        for (header, deps) in sections {
+            let Some(deps) = deps else { continue };
+            text.push_str(header);
+            for (name, spec) in deps {
+                let spec = if spec.get("workspace").and_then(|w| w.as_bool()) == Some(true) {
+                    shared.get(name).ok_or_else(|| {
+                        bad(&root_path, &format!("no workspace dependency `{name}`"))
+                    })?
+                } else {
+                    spec
+                };
+                text.push_str(&format!("{name} = {}\n", self.resolve(exercise, spec)));
+            }
         }
         text.push_str(
             "\n[workspace]\n\n\
