@@ -27,7 +27,7 @@ fn sum_sample(ledger: &Ledger, sample: usize) -> Vec3 {
     let mut ray = sample as u32;
     while ray != END {
         colour += ledger.light(ray as usize);
-        ray = ledger.next[ray as usize];
+        ray = ledger.next(ray as usize);
     }
     colour
 }
@@ -41,7 +41,7 @@ fn count_sample(waves: &Waves, sample: usize, counts: &mut RayCounts) {
         let (kind, cast_shadow) = waves.kinds[ray as usize];
         counts.0[kind.index()] += 1;
         counts.0[RayKind::Shadow.index()] += u64::from(cast_shadow);
-        ray = waves.ledger.next[ray as usize];
+        ray = waves.ledger.next(ray as usize);
     }
 }
 

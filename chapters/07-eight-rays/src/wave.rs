@@ -36,59 +36,66 @@ pub const END: u32 = u32::MAX;
 /// which the stack pops first); the child links to its sibling, and the
 /// last child to whatever its parent linked to before. The links are made
 /// when the children are packed, so summing a sample is a walk along them.
+///
+/// Each entry is one record of 16 bytes, the light and the link side by
+/// side: the walk reads one cache line per ray, not one from each of four
+/// arrays.
 #[derive(Clone, Debug, Default)]
 pub struct Ledger {
-    x: Vec<f32>,
-    y: Vec<f32>,
-    z: Vec<f32>,
-    pub next: Vec<u32>,
+    entries: Vec<Entry>,
+}
+
+/// One ray's entry: the light it added, and the ray popped after it.
+#[derive(Clone, Copy, Debug, Default)]
+#[repr(C, align(16))]
+struct Entry {
+    light: [f32; 3],
+    next: u32,
 }
 // ANCHOR_END: ledger
 
 impl Ledger {
     pub fn clear(&mut self) {
-        for light in [&mut self.x, &mut self.y, &mut self.z] {
-            light.clear();
-        }
-        self.next.clear();
+        self.entries.clear();
     }
 
     /// How many rays are in the ledger: the number the next one gets.
     pub fn len(&self) -> usize {
-        self.next.len()
+        self.entries.len()
     }
 
     pub fn is_empty(&self) -> bool {
-        self.next.is_empty()
+        self.entries.is_empty()
     }
 
     /// What ray `ray` added to its sample.
     pub fn light(&self, ray: usize) -> Vec3 {
-        Vec3::new(self.x[ray], self.y[ray], self.z[ray])
+        Vec3::from_array(self.entries[ray].light)
     }
 
-    /// Append a group's first `lanes` rays: eight entries written (copies
-    /// of known size), then the padding lanes' dropped.
+    /// The ray its sample's stack pops after ray `ray`, or [`END`].
+    pub fn next(&self, ray: usize) -> u32 {
+        self.entries[ray].next
+    }
+
+    /// Append a group's first `lanes` rays: the four numbers of each lane
+    /// transposed into its record (a link travels as an `f32`'s bits).
     fn push_group(&mut self, light: Vec3x8, next: [u32; LANES], lanes: usize) {
-        let keep = self.len() + lanes;
-        append(&mut self.x, light.x.as_array_ref(), keep);
-        append(&mut self.y, light.y.as_array_ref(), keep);
-        append(&mut self.z, light.z.as_array_ref(), keep);
-        append(&mut self.next, &next, keep);
+        let next = f32x8::from(next.map(f32::from_bits));
+        let zero = f32x8::ZERO;
+        let rows = f32x8::transpose([light.x, light.y, light.z, next, zero, zero, zero, zero]);
+        self.entries.extend(rows[..lanes].iter().map(|row| {
+            let [x, y, z, next, ..] = row.to_array();
+            Entry {
+                light: [x, y, z],
+                next: next.to_bits(),
+            }
+        }));
     }
 
     fn reserve(&mut self, more: usize) {
-        for light in [&mut self.x, &mut self.y, &mut self.z] {
-            light.reserve(more + LANES);
-        }
-        self.next.reserve(more + LANES);
+        self.entries.reserve(more + LANES);
     }
-}
-
-/// Append eight entries to `to`, then cut it back to `keep` entries.
-fn append<T: Copy>(to: &mut Vec<T>, eight: &[T; LANES], keep: usize) {
-    to.extend_from_slice(eight);
-    to.truncate(keep);
 }
 
 /// The fixed part of a render: the scene in lanes, the light, the limits.
