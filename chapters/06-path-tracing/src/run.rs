@@ -181,22 +181,16 @@ pub fn run(options: &Options, flags: &Flags) -> Result<Report, CliError> {
     // The files in the order they are listed, render.png first, written
     // on every core at once: each encoder is one thread's work, and an
     // 800 × 600 EXR takes as long to write as a few paths per pixel take to
-    // render.
+    // render. The render and its variance are noise to a lossless coder
+    // (see `Packing::Raw`); the terms are black wherever their light is
+    // absent, and run-length coded.
+    let raw = Format::Exr(Packing::Raw);
     let mut files = vec![
         ("render.png".to_owned(), &rendered.image, Format::Png),
-        (
-            "render.exr".to_owned(),
-            &rendered.image,
-            Format::Exr(Packing::Raw),
-        ),
+        ("render.exr".to_owned(), &rendered.image, raw),
     ];
     if settings.sampling.spp() > 1 {
-        let variance = &rendered.variance;
-        files.push((
-            "variance.exr".to_owned(),
-            variance,
-            Format::Exr(Packing::Raw),
-        ));
+        files.push(("variance.exr".to_owned(), &rendered.variance, raw));
     }
     if let Some(terms) = &rendered.terms {
         for format in [Format::Exr(Packing::RunLength), Format::Png] {
