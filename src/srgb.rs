@@ -36,8 +36,9 @@ pub fn quantise(v: f32) -> u8 {
 /// *thresholds*, the smallest `c` that encodes to each level 1 to 255. A
 /// second table, indexed by the top 16 bits of `c` (its exponent and 7
 /// bits of mantissa, so 128 slots per octave), gives the level at the
-/// bottom of each slot; at most a threshold or two lie inside a slot, and
-/// a comparison or two finds the byte.
+/// bottom of each slot. The levels climb slowly enough that at most one
+/// threshold lies inside a slot (`new` checks it), so one comparison with
+/// it finds the byte.
 pub struct EncodeTable {
     /// `thresholds[v]`: the smallest `c` that encodes to `v`; level 256,
     /// which no `c` reaches, is infinitely far.
@@ -68,9 +69,12 @@ impl EncodeTable {
             }
             *threshold = f32::from_bits(lo);
         }
-        let slots = (0..=slot(1.0))
+        let slots: Vec<u8> = (0..=slot(1.0))
             .map(|s| encode_channel(f32::from_bits((s as u32) << 16)))
             .collect();
+        // The level at a slot's bottom and the next slot's bottom differ
+        // by at most 1: no slot holds two thresholds.
+        assert!(slots.windows(2).all(|w| w[1] - w[0] <= 1));
         EncodeTable { thresholds, slots }
     }
 
@@ -83,19 +87,15 @@ impl EncodeTable {
 
     /// The same byte as [`encode_channel`], for every `f32`.
     pub fn encode(&self, c: f32) -> u8 {
-        // NaN, negatives and zero are black; 1 and above are white, as the
-        // clamp in `encode_channel` makes them.
-        if c.is_nan() || c <= 0.0 {
-            return 0;
-        }
-        if c >= 1.0 {
-            return 255;
-        }
-        let mut level = self.slots[slot(c)];
-        while c >= self.thresholds[usize::from(level) + 1] {
-            level += 1;
-        }
-        level
+        // NaN, negatives and zero are black, and 1 and above white, as the
+        // clamp in `encode_channel` makes them (`c > 0` is false for NaN).
+        // 1 has a slot of its own, whose level is 255.
+        let c = if c > 0.0 { c.min(1.0) } else { 0.0 };
+        let level = self.slots[slot(c)];
+        // Past the slot's one threshold or not, added without a branch:
+        // in a noisy image that is a coin toss, and a branch on it would
+        // be mispredicted half the time.
+        level + u8::from(c >= self.thresholds[usize::from(level) + 1])
     }
 }
 // ANCHOR_END: table
