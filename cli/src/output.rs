@@ -4,7 +4,7 @@ use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
 
-use image::codecs::png::PngEncoder;
+use image::codecs::png::{CompressionType, FilterType, PngEncoder};
 use image::{ExtendedColorType, ImageEncoder, RgbImage};
 
 /// A file that could not be written, and why.
@@ -54,9 +54,15 @@ pub fn write_atomically(
 }
 
 /// Save an 8-bit RGB image as a PNG, atomically.
+///
+/// Compressed fast (`image`'s default), with every row filtered by Paeth's
+/// predictor. `image`'s default tries all five PNG filters on each row and
+/// keeps the best; over the book's 109 figures that took a third longer
+/// (241 against 179 ms) for files 0.35 % smaller, and for chapter 7's
+/// render, written at the end of a 0.1 s program, 2.9 against 1.5 ms.
 pub fn save_png(image: &RgbImage, path: &Path) -> Result<(), WriteError> {
     write_atomically(path, |w| {
-        PngEncoder::new(w)
+        PngEncoder::new_with_quality(w, CompressionType::Fast, FilterType::Paeth)
             .write_image(
                 image.as_raw(),
                 image.width(),
