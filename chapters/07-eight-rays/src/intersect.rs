@@ -148,7 +148,12 @@ impl SceneX8 {
         let point = o + d.scale(hits.t);
         let on_ground = hits.object.cmp_eq(f32x8::splat(GROUND));
         let mut centre = Vec3x8::splat(Vec3::ZERO);
-        let (mut albedo, mut albedo_over_pi) = self.checker(point);
+        // Divergence: groups with no lane on the ground skip the checker.
+        let (mut albedo, mut albedo_over_pi) = if on_ground.any() {
+            self.checker(point)
+        } else {
+            (Vec3x8::ZERO, Vec3x8::ZERO)
+        };
         let (mut reflection, mut transmission, mut ior) = (f32x8::ZERO, f32x8::ZERO, f32x8::ONE);
         // Each lane picks its own sphere's numbers: one blend per sphere,
         // where a scalar tracer would index an array.
@@ -166,8 +171,15 @@ impl SceneX8 {
             transmission = mine.blend(s.transmission, transmission);
             ior = mine.blend(s.ior, ior);
         }
-        let sphere_normal = (point - centre).normalize();
-        let normal = Vec3x8::select(on_ground, Vec3x8::splat(self.plane_normal), sphere_normal);
+        let ground_normal = Vec3x8::splat(self.plane_normal);
+        // Divergence: a group whose hits are all on the ground (or nowhere)
+        // has no sphere normal to normalise, and skips the division.
+        let normal = if (hits.hit & !on_ground).none() {
+            ground_normal
+        } else {
+            let sphere_normal = (point - centre).normalize();
+            Vec3x8::select(on_ground, ground_normal, sphere_normal)
+        };
         let entering = d.dot(normal).cmp_lt(f32x8::ZERO);
         let facing_normal = Vec3x8::select(entering, normal, -normal);
         Surfaces {

@@ -131,7 +131,12 @@ struct Shaded {
 fn shade_group(setup: &Setup, rays: &Group, can_send: bool) -> Shaded {
     let (o, d, w) = (rays.origin, rays.direction, rays.weight);
     let hits = setup.scene.nearest(o, d);
-    let sky = setup.light.sky(d).scale(w);
+    // Divergence: where all eight rays hit something, no lane sees the sky.
+    let sky = if hits.hit.all() {
+        Vec3x8::ZERO
+    } else {
+        setup.light.sky(d).scale(w)
+    };
     let mut shaded = Shaded {
         added: sky,
         hit: hits.hit,
