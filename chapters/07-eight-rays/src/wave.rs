@@ -207,8 +207,14 @@ fn shade_group(setup: &Setup, rays: &Group, can_send: bool) -> Shaded {
 /// A row's waves and ledger, kept by one worker and reused for every row.
 #[derive(Default)]
 pub struct Waves {
-    /// `rays[d]`: the rays of depth `d + 1`.
-    pub rays: Vec<Rays>,
+    /// The rays of the wave being traced (from wave 2 on; wave 1's are
+    /// made by the camera as they are traced).
+    rays: Rays,
+    /// The rays it sends on: the next wave. Once a wave is traced, its
+    /// rays are never read again (the ledger keeps what they did), so two
+    /// arrays, swapped after each wave, serve every depth, and their
+    /// memory stays warm in the cache from row to row.
+    next: Rays,
     /// Every traced ray's light and link, numbered wave after wave.
     pub ledger: Ledger,
     /// Per ledger entry, the ray's kind and whether it cast a shadow ray;
@@ -237,13 +243,8 @@ pub fn budget_matters(max_depth: u32) -> bool {
 impl Waves {
     /// Start a row: `samples` samples, none traced yet.
     pub fn start(&mut self, samples: usize, setup: &Setup) {
-        let depths = setup.max_depth as usize;
-        if self.rays.len() < depths {
-            self.rays.resize_with(depths, Rays::default);
-        }
-        for rays in &mut self.rays {
-            rays.clear();
-        }
+        self.rays.clear();
+        self.next.clear();
         self.ledger.clear();
         self.kinds.clear();
         self.counting = budget_matters(setup.max_depth);
@@ -273,7 +274,10 @@ impl Waves {
         self.counts.0[RayKind::Primary.index()] += primary.len() as u64;
         self.trace_wave(setup, 1, Some(primary));
         for depth in 2..=setup.max_depth as usize {
-            if self.rays[depth - 1].is_empty() {
+            // The rays just sent on become the wave to trace.
+            std::mem::swap(&mut self.rays, &mut self.next);
+            self.next.clear();
+            if self.rays.is_empty() {
                 break;
             }
             self.trace_wave(setup, depth, None);
@@ -282,14 +286,11 @@ impl Waves {
     // ANCHOR_END: waves
 
     /// Trace the wave of rays at `depth` (the camera's `primary` rays, or
-    /// those in `rays[depth - 1]`), and pack the rays they send on densely
-    /// into the next wave.
+    /// those in `rays`), and pack the rays they send on densely into
+    /// `next`.
     fn trace_wave(&mut self, setup: &Setup, depth: usize, primary: Option<&PrimaryRays>) {
         let can_send = depth < setup.max_depth as usize;
-        let (this, rest) = self.rays.split_at_mut(depth);
-        let rays = &mut this[depth - 1];
-        let mut empty = Rays::default();
-        let next = rest.first_mut().unwrap_or(&mut empty);
+        let (rays, next) = (&mut self.rays, &mut self.next);
         let len = match primary {
             Some(primary) => primary.len(),
             None => {
