@@ -19,6 +19,7 @@ pub mod light;
 pub mod linear_image;
 pub mod material;
 pub mod optics;
+pub mod outputs;
 pub mod plane;
 pub mod probe;
 pub mod ray;
@@ -41,8 +42,9 @@ pub use indicatif;
 
 pub use camera::Camera;
 pub use material::Material;
+pub use outputs::{Keep, PixelMaps};
 pub use ray::{Ray, RayKind};
-pub use render::{Maps, PixelMaps, Rendered, Settings, render, render_every_depth};
+pub use render::{Rendered, Settings, render, render_every_depth};
 pub use sampling::{Pattern, Sampling};
 pub use scene::{Hit, Object, Scene};
 pub use trace::{Step, Surface, Tracer};

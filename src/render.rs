@@ -3,12 +3,14 @@
 use std::fmt;
 use std::time::{Duration, Instant};
 
+use image::RgbImage;
 use indicatif::ProgressBar;
 use rayon::prelude::*;
 
 use crate::Vec3;
 use crate::camera::Camera;
 use crate::linear_image::LinearImage;
+use crate::outputs::{Keep, Outputs, PixelMaps};
 use crate::ray::RayKind;
 use crate::sampling::Sampling;
 use crate::scene::Scene;
@@ -27,43 +29,15 @@ pub struct Settings {
     pub sampling: Sampling,
 }
 
-/// Whether a render keeps the per-pixel maps that the heat-map diagrams
-/// draw. A program that draws no diagrams (`--no-diagrams`) skips them:
-/// the image is the same either way, only the bookkeeping is saved.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Maps {
-    Keep,
-    Skip,
-}
-
-/// Per pixel, what its ray trees cost: the heat maps' numbers.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct PixelMaps {
-    /// Per pixel: the depth of the deepest ray of its trees.
-    pub deepest: Vec<u8>,
-    /// Per pixel: every ray traced for it, shadow rays included.
-    pub rays: Vec<u32>,
-}
-
-impl PixelMaps {
-    /// Zeroed maps of `pixels` pixels, first touched on every core (see
-    /// [`render`]).
-    pub fn zeroed(pixels: usize) -> PixelMaps {
-        let mut maps = PixelMaps {
-            deepest: Vec::with_capacity(pixels),
-            rays: Vec::with_capacity(pixels),
-        };
-        maps.deepest.par_extend(rayon::iter::repeat_n(0, pixels));
-        maps.rays.par_extend(rayon::iter::repeat_n(0, pixels));
-        maps
-    }
-}
-
 /// A rendered image, with what the renderer did to make it.
 #[derive(Clone, Debug)]
 pub struct Rendered {
     pub settings: Settings,
-    pub image: LinearImage,
+    /// The image as `render.png` stores it: LAB.md's 8-bit sRGB, encoded
+    /// by the workers as they finish each row.
+    pub srgb: RgbImage,
+    /// The image in linear light, when the render was asked to keep it.
+    pub linear: Option<LinearImage>,
     /// The depth and ray-count maps, when the render was asked to keep them.
     pub maps: Option<PixelMaps>,
     pub counts: RayCounts,
@@ -131,49 +105,35 @@ impl std::ops::Add for RowTally {
 }
 
 /// Render `scene` through `camera` with a chapter's `step`, one image row
-/// per task on every core, ticking `progress` once per row; with
-/// [`Maps::Keep`], the per-pixel depth and ray-count maps too.
+/// per task on every core, ticking `progress` once per row; the 8-bit
+/// image, and what `keep` asks for besides.
 pub fn render<S: Step + ?Sized>(
     scene: &Scene,
     camera: &Camera,
     step: &S,
     settings: &Settings,
-    maps: Maps,
+    keep: Keep,
     progress: &ProgressBar,
 ) -> Rendered {
-    let (width, height) = (settings.width as usize, settings.height as usize);
     let start = Instant::now();
-    // The workers write every row straight into the three outputs. Made
-    // like this, the buffers' memory is first touched (and so handed out
-    // and zeroed by the kernel) on every core instead of on this thread:
-    // at 800 × 600 that alone took 5 ms before the first ray.
-    let mut colours = Vec::with_capacity(width * height);
-    colours.par_extend(rayon::iter::repeat_n(Vec3::ZERO, width * height));
-    let mut pixel_maps = (maps == Maps::Keep).then(|| PixelMaps::zeroed(width * height));
-    let map_rows = map_rows(pixel_maps.as_mut(), width, height);
+    let mut outputs = Outputs::new(settings.width, settings.height, keep);
     // ANCHOR: rows
-    let tally = colours
-        .par_chunks_mut(width)
-        .zip(map_rows)
+    let tally = outputs
+        .rows()
         .enumerate()
         // One tracer (and so one ray stack) per worker, made once and
         // borrowed for every row that worker renders.
         .map_init(
             || Tracer::new(scene, step, settings.max_depth, settings.epsilon),
-            |tracer, (j, (colour_row, mut map_row))| {
+            |tracer, (j, mut out)| {
                 let before = tracer.counts();
                 let mut row = RowTally::default();
-                for (i, colour) in colour_row.iter_mut().enumerate() {
+                for i in 0..settings.width as usize {
                     let pixel = render_pixel(tracer, camera, (i as u32, j as u32), settings);
-                    *colour = if pixel.colour.is_finite() {
-                        pixel.colour
-                    } else {
+                    if !out.set_colour(i, pixel.colour) {
                         row.non_finite += 1;
-                        Vec3::ZERO
-                    };
-                    if let Some((deepest, rays)) = &mut map_row {
-                        (deepest[i], rays[i]) = (pixel.deepest, pixel.rays);
                     }
+                    out.set_maps(i, pixel.deepest, pixel.rays);
                     row.over_budget += u64::from(pixel.over_budget);
                 }
                 progress.inc(1);
@@ -183,37 +143,20 @@ pub fn render<S: Step + ?Sized>(
         )
         .reduce(RowTally::default, |a, b| a + b);
     // ANCHOR_END: rows
-    Rendered {
-        settings: *settings,
-        image: LinearImage::from_pixels(settings.width, settings.height, colours),
-        maps: pixel_maps,
-        counts: tally.counts,
-        elapsed: start.elapsed(),
-        non_finite: tally.non_finite,
-        over_budget: tally.over_budget,
-    }
-}
-
-/// The maps' rows, one per image row, to hand out with the colour rows;
-/// `None` for every row when the maps are not kept.
-pub fn map_rows(
-    maps: Option<&mut PixelMaps>,
-    width: usize,
-    height: usize,
-) -> impl IndexedParallelIterator<Item = Option<(&mut [u8], &mut [u32])>> {
-    let rows: Vec<Option<(&mut [u8], &mut [u32])>> = match maps {
-        Some(maps) => maps
-            .deepest
-            .chunks_mut(width)
-            .zip(maps.rays.chunks_mut(width))
-            .map(Some)
-            .collect(),
-        None => (0..height).map(|_| None).collect(),
-    };
-    rows.into_par_iter()
+    outputs.finish(settings, tally, start)
 }
 
 impl Rendered {
+    /// The image in linear light.
+    ///
+    /// # Panics
+    /// If the render was not asked to keep it ([`Keep::linear`]).
+    pub fn linear_image(&self) -> &LinearImage {
+        self.linear
+            .as_ref()
+            .expect("a render asked to keep its linear image (Keep::linear)")
+    }
+
     /// Millions of rays traced per second of wall time.
     pub fn mrays_per_second(&self) -> f64 {
         self.counts.total() as f64 / self.elapsed.as_secs_f64().max(1e-9) / 1e6

@@ -5,8 +5,9 @@ use indicatif::ProgressBar;
 
 use crate::Vec3;
 use crate::camera::Camera;
+use crate::outputs::Keep;
 use crate::ray::{Ray, RayKind};
-use crate::render::{Maps, Rendered, Settings};
+use crate::render::{Rendered, Settings};
 use crate::scene::{Hit, Object, Scene};
 use crate::stack::{MAX_DEPTH_LIMIT, MAX_SECONDARIES, PendingRay, RayStack};
 
@@ -32,17 +33,17 @@ pub trait Step: Sync {
     /// How a program renders its whole image with this step: by default
     /// one ray at a time, with [`render`](crate::render::render). Chapter 7
     /// overrides it to trace eight rays at a time, to the same bytes; the
-    /// probe and the depth sweep always use `shade`. The per-pixel maps are
-    /// kept only with [`Maps::Keep`].
+    /// probe and the depth sweep always use `shade`. The linear image and
+    /// the per-pixel maps are kept only as `keep` asks.
     fn render_image(
         &self,
         scene: &Scene,
         camera: &Camera,
         settings: &Settings,
-        maps: Maps,
+        keep: Keep,
         progress: &ProgressBar,
     ) -> Rendered {
-        crate::render::render(scene, camera, self, settings, maps, progress)
+        crate::render::render(scene, camera, self, settings, keep, progress)
     }
 }
 // ANCHOR_END: step

@@ -1,7 +1,7 @@
 //! How the chapters relate: each one changes only what its step adds.
 
 use raylab::indicatif::ProgressBar;
-use raylab::{Camera, Maps, Rendered, Sampling, Scene, Settings, Step, Tracer, Vec3, render};
+use raylab::{Camera, Keep, Rendered, Sampling, Scene, Settings, Step, Tracer, Vec3, render};
 
 fn settings(max_depth: u32, spp: u32) -> Settings {
     Settings {
@@ -19,7 +19,7 @@ fn render_with<S: Step + ?Sized>(step: &S, settings: &Settings) -> Rendered {
         &Camera::lab(),
         step,
         settings,
-        Maps::Skip,
+        Keep::LINEAR,
         &ProgressBar::hidden(),
     )
 }
@@ -86,9 +86,10 @@ fn no_chapter_ever_makes_a_nan_or_infinite_pixel() {
             };
             let rendered = render_with(step, &settings);
             assert_eq!(rendered.non_finite, 0);
-            assert!(rendered.image.is_finite());
-            let rgb = rendered.image.to_srgb8();
-            assert_eq!(rgb.dimensions(), (40, 30));
+            assert!(rendered.linear_image().is_finite());
+            // The workers' 8-bit image is the linear one, encoded.
+            assert_eq!(rendered.srgb, rendered.linear_image().to_srgb8());
+            assert_eq!(rendered.srgb.dimensions(), (40, 30));
             if epsilon > 0.0 {
                 assert_eq!(
                     rendered.over_budget, 0,
@@ -105,9 +106,9 @@ fn five_rays_per_pixel_only_soften_edges() {
     // change and the ones that do lie on edges.
     let one = render_with(&ch05_antialiasing::Refraction, &settings(10, 1));
     let four = render_with(&ch04_refraction::Refraction, &settings(10, 1));
-    assert_eq!(one.image, four.image);
+    assert_eq!(one.linear_image(), four.linear_image());
     let five = render_with(&ch05_antialiasing::Refraction, &settings(10, 5));
-    let agreement = raylab_tests::compare(&one.image.to_srgb8(), &five.image.to_srgb8());
+    let agreement = raylab_tests::compare(&one.srgb, &five.srgb);
     assert!(
         agreement.within_3 > 0.6 && agreement.within_3 < 1.0,
         "{agreement:?}"
@@ -119,7 +120,12 @@ fn chapter_2_darkens_only_shadowed_points() {
     let ch1 = render_with(&ch01_ray_cast::RayCast, &settings(1, 1));
     let ch2 = render_with(&ch02_shadows::Shadows, &settings(1, 1));
     let mut darker = 0;
-    for (a, b) in ch1.image.pixels().iter().zip(ch2.image.pixels()) {
+    for (a, b) in ch1
+        .linear_image()
+        .pixels()
+        .iter()
+        .zip(ch2.linear_image().pixels())
+    {
         assert!(
             b.cmple(*a + Vec3::splat(1e-6)).all(),
             "a shadow never brightens"

@@ -6,7 +6,7 @@ use std::path::Path;
 use ch07_eight_rays::{EightRays, Like, render::render_waves};
 use raylab::indicatif::ProgressBar;
 use raylab::sampling::Pattern;
-use raylab::{Camera, Maps, RayKind, Sampling, Scene, Settings, Step, render};
+use raylab::{Camera, Keep, RayKind, Sampling, Scene, Settings, Step, render};
 
 /// The scalar chapter that `like` imitates, as a step.
 fn scalar_step(like: Like) -> &'static dyn Step {
@@ -38,18 +38,16 @@ fn assert_same(like: Like, scene: &Scene, camera: &Camera, settings: &Settings) 
         camera,
         scalar_step(like),
         settings,
-        Maps::Keep,
+        Keep::ALL,
         &hidden,
     );
     let step = EightRays { like };
-    let waves = render_waves(scene, camera, &step, settings, Maps::Keep, &hidden);
+    let waves = render_waves(scene, camera, &step, settings, Keep::ALL, &hidden);
     let what = format!("like {} at {settings}", like.binary());
-    assert!(
-        scalar.image.to_srgb8() == waves.image.to_srgb8(),
-        "{what}: the images differ"
-    );
+    assert!(scalar.srgb == waves.srgb, "{what}: the images differ");
     assert_eq!(
-        scalar.image, waves.image,
+        scalar.linear_image(),
+        waves.linear_image(),
         "{what}: the linear colours differ"
     );
     for kind in RayKind::ALL {
@@ -165,19 +163,20 @@ fn with_no_offset_the_trees_that_reach_the_ray_budget_are_the_same() {
 }
 
 #[test]
-fn without_the_maps_both_tracers_make_the_same_image_and_keep_no_maps() {
+fn keeping_only_the_8_bit_image_both_tracers_make_the_same_one_and_keep_nothing_else() {
     let (scene, camera) = (Scene::lab(), Camera::lab());
     let settings = settings(Like::AntiAliasing, (83, 61));
     let hidden = ProgressBar::hidden();
     let step = EightRays {
         like: Like::AntiAliasing,
     };
-    let kept = render_waves(&scene, &camera, &step, &settings, Maps::Keep, &hidden);
-    let scalar = render(&scene, &camera, &step, &settings, Maps::Skip, &hidden);
-    let waves = render_waves(&scene, &camera, &step, &settings, Maps::Skip, &hidden);
+    let kept = render_waves(&scene, &camera, &step, &settings, Keep::ALL, &hidden);
+    let scalar = render(&scene, &camera, &step, &settings, Keep::IMAGE, &hidden);
+    let waves = render_waves(&scene, &camera, &step, &settings, Keep::IMAGE, &hidden);
     for skipped in [&scalar, &waves] {
         assert!(skipped.maps.is_none());
-        assert_eq!(skipped.image, kept.image);
+        assert!(skipped.linear.is_none());
+        assert_eq!(skipped.srgb, kept.srgb);
         assert_eq!(skipped.counts, kept.counts);
     }
 }

@@ -3,7 +3,7 @@
 //! pattern is random.
 
 use raylab::indicatif::ProgressBar;
-use raylab::{Camera, Maps, Pattern, Sampling, Scene, Settings, Tracer, Vec3, render};
+use raylab::{Camera, Keep, Pattern, Sampling, Scene, Settings, Tracer, Vec3, render};
 
 const STEP: ch05_antialiasing::Refraction = ch05_antialiasing::Refraction;
 
@@ -28,12 +28,11 @@ fn render_on(threads: usize, settings: &Settings) -> image::RgbImage {
             &Camera::lab(),
             &STEP,
             settings,
-            Maps::Skip,
+            Keep::IMAGE,
             &ProgressBar::hidden(),
         )
     })
-    .image
-    .to_srgb8()
+    .srgb
 }
 
 #[test]
@@ -59,7 +58,7 @@ fn pixels_traced_one_by_one_backwards_match_the_parallel_render() {
         &camera,
         &STEP,
         &settings,
-        Maps::Skip,
+        Keep::LINEAR,
         &ProgressBar::hidden(),
     );
     let mut tracer = Tracer::new(&scene, &STEP, settings.max_depth, settings.epsilon);
@@ -71,7 +70,11 @@ fn pixels_traced_one_by_one_backwards_match_the_parallel_render() {
                 sum += tracer.trace(ray).colour;
             }
             let colour = sum / settings.sampling.spp() as f32;
-            assert_eq!(rendered.image.pixel(i, j), colour, "pixel ({i}, {j})");
+            assert_eq!(
+                rendered.linear_image().pixel(i, j),
+                colour,
+                "pixel ({i}, {j})"
+            );
         }
     }
 }

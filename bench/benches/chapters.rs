@@ -20,7 +20,7 @@ use std::time::{Duration, Instant};
 
 use criterion::{Criterion, SamplingMode, Throughput, criterion_group, criterion_main};
 use raylab::indicatif::ProgressBar;
-use raylab::{Camera, Maps, Sampling, Scene, Settings, Step, render};
+use raylab::{Camera, Keep, Sampling, Scene, Settings, Step, render};
 use raylab_cli::{Chapter, Options};
 
 /// Each chapter's program renders with its step's `render_image`: the
@@ -103,7 +103,7 @@ fn interleaved_path_tracer(c: &mut Criterion) {
     let step = &ch05_antialiasing::CHAPTER.step;
     let (scene, camera) = (Scene::lab(), Camera::lab());
     let hidden = ProgressBar::hidden();
-    let render_five = || step.render_image(&scene, &camera, &five, Maps::Skip, &hidden);
+    let render_five = || step.render_image(&scene, &camera, &five, Keep::IMAGE, &hidden);
     let with = |tracer| PathSettings { tracer, ..six };
     let (scalar, eight) = (with(Tracer::Scalar), with(Tracer::Eight));
     let render_scalar = || ch06_path_tracing::render(&scene, &camera, &scalar, &hidden);
@@ -242,7 +242,7 @@ fn bench_in<S: Step>(
     let render = || {
         chapter
             .step
-            .render_image(&scene, &camera, &settings, Maps::Skip, &hidden)
+            .render_image(&scene, &camera, &settings, Keep::IMAGE, &hidden)
     };
     group.throughput(Throughput::Elements(render().counts.total()));
     group.bench_function(chapter.binary, |b| b.iter(render));
@@ -270,12 +270,12 @@ fn rays_per_pixel(c: &mut Criterion) {
             epsilon: 1e-4,
             sampling,
         };
-        let rays = render(&scene, &camera, step, &settings, Maps::Skip, &hidden)
+        let rays = render(&scene, &camera, step, &settings, Keep::IMAGE, &hidden)
             .counts
             .total();
         group.throughput(Throughput::Elements(rays));
         group.bench_function(name, |b| {
-            b.iter(|| render(&scene, &camera, step, &settings, Maps::Skip, &hidden))
+            b.iter(|| render(&scene, &camera, step, &settings, Keep::IMAGE, &hidden))
         });
     }
     group.finish();

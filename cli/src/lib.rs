@@ -26,8 +26,9 @@ use crate::output::{WriteError, save_png, save_text};
 use crate::probe_text::Listing;
 use crate::scene_file::SceneFileError;
 use raylab::camera::Camera;
+use raylab::outputs::Keep;
 use raylab::probe::{self, ProbeTarget};
-use raylab::render::{Maps, Rendered, Settings, render_every_depth};
+use raylab::render::{Rendered, Settings, render_every_depth};
 use raylab::sampling::{MAX_SPP, Pattern, Sampling, SamplingError};
 use raylab::scene::Scene;
 use raylab::stack::MAX_DEPTH_LIMIT;
@@ -378,20 +379,19 @@ pub fn run<S: Step>(chapter: &Chapter<S>, options: &Options) -> Result<Report, C
     prepare_out_dir(&out_dir)?;
 
     let progress = progress_bar(u64::from(settings.height), options.quiet);
-    // The depth and ray-count maps are only worth their bookkeeping when
-    // the heat maps are drawn.
-    let maps = if options.no_diagrams {
-        Maps::Skip
-    } else {
-        Maps::Keep
+    // The program writes the 8-bit image; the linear one is never needed,
+    // and the depth and ray-count maps only when the heat maps are drawn.
+    let keep = Keep {
+        linear: false,
+        maps: !options.no_diagrams,
     };
     let rendered = chapter
         .step
-        .render_image(&scene, &camera, &settings, maps, &progress);
+        .render_image(&scene, &camera, &settings, keep, &progress);
     progress.finish_and_clear();
 
     let render_png = out_dir.join("render.png");
-    save_png(&rendered.image.to_srgb8(), &render_png)?;
+    save_png(&rendered.srgb, &render_png)?;
     let mut report = Report {
         rendered,
         out_dir: out_dir.clone(),

@@ -7,7 +7,7 @@ use std::time::Duration;
 
 use image::RgbImage;
 use raylab::indicatif::ProgressBar;
-use raylab::{Camera, Maps, Scene, Step, render};
+use raylab::{Camera, Keep, Scene, Step, render};
 use raylab_cli::{Chapter, Options};
 
 use crate::compare::{Comparison, GAIN, compare, signed_difference};
@@ -425,10 +425,10 @@ fn small_render<S: Step>(chapter: &Chapter<S>) -> RgbImage {
         &Camera::lab(),
         &chapter.step,
         &settings,
-        Maps::Skip,
+        Keep::IMAGE,
         &ProgressBar::hidden(),
     );
-    rendered.image.to_srgb8()
+    rendered.srgb
 }
 
 #[cfg(test)]

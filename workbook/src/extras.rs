@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use image::RgbImage;
 use raylab::indicatif::ProgressBar;
 use raylab::sampling::LAB_FIVE;
-use raylab::{Camera, Maps, Sampling, Scene, Settings, Step, render};
+use raylab::{Camera, Keep, Sampling, Scene, Settings, Step, render};
 use raylab_cli::output::save_png;
 use raylab_plot::colour::{AXIS, GRID, TEXT, TEXT_MUTED, WHITE};
 use raylab_plot::{Anchor, Canvas};
@@ -41,11 +41,10 @@ fn render_srgb<S: Step>(step: &S, settings: &Settings) -> RgbImage {
         &camera,
         step,
         settings,
-        Maps::Skip,
+        Keep::IMAGE,
         &ProgressBar::hidden(),
     )
-    .image
-    .to_srgb8()
+    .srgb
 }
 
 /// The same region on the horizon, right of the red sphere, where the
@@ -109,11 +108,10 @@ pub fn make_scene_figures(dir: &Path, scenes: &Path, size: Size) -> Result<Vec<P
             &camera,
             &ch04_refraction::Refraction,
             &settings,
-            Maps::Skip,
+            Keep::IMAGE,
             &ProgressBar::hidden(),
         )
-        .image
-        .to_srgb8();
+        .srgb;
         let path = dir.join(name);
         save_png(&image, &path)?;
         written.push(path);

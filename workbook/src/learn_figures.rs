@@ -33,7 +33,7 @@ pub fn make_learn_figures(dir: &Path) -> Result<Vec<PathBuf>, JobError> {
     let options = raylab_cli::Options::parse_for(chapter, args)
         .map_err(|e| raylab_cli::CliError::Usage(e.to_string()))?;
     let report = raylab_cli::run(chapter, &options)?;
-    let acne = report.rendered.image.to_srgb8();
+    let acne = report.rendered.srgb;
     let reference = learn::check::reference_image(2);
     let difference = learn::compare::signed_difference(&acne, &reference);
     let mut written = Vec::new();

@@ -140,10 +140,11 @@ fn whitted_image(width: u32, height: u32) -> LinearImage {
         &Camera::lab(),
         &ch05_antialiasing::CHAPTER.step,
         &settings,
-        raylab::Maps::Skip,
+        raylab::Keep::LINEAR,
         &ProgressBar::hidden(),
     )
-    .image
+    .linear
+    .expect("kept")
 }
 
 /// Write chapter 6's study figures under `dir` (`figures/ch06-path-tracing`).

@@ -31,7 +31,7 @@ use ch02_shadows::Shadows;
 use ch03_reflection::Reflection;
 use ch04_refraction::Refraction;
 use raylab::indicatif::ProgressBar;
-use raylab::{Camera, Hit, Maps, Ray, Rendered, Scene, Settings, Step, Surface, Vec3};
+use raylab::{Camera, Hit, Keep, Ray, Rendered, Scene, Settings, Step, Surface, Vec3};
 use raylab_cli::Chapter;
 
 pub use like::Like;
@@ -61,10 +61,10 @@ impl Step for EightRays {
         scene: &Scene,
         camera: &Camera,
         settings: &Settings,
-        maps: Maps,
+        keep: Keep,
         progress: &ProgressBar,
     ) -> Rendered {
-        render::render_waves(scene, camera, self, settings, maps, progress)
+        render::render_waves(scene, camera, self, settings, keep, progress)
     }
 }
 

@@ -5,10 +5,10 @@ use std::cell::RefCell;
 use std::time::Instant;
 
 use raylab::indicatif::ProgressBar;
-use raylab::linear_image::LinearImage;
-use raylab::render::{RowTally, map_rows};
+use raylab::outputs::{Outputs, RowOutputs};
+use raylab::render::RowTally;
 use raylab::trace::RayCounts;
-use raylab::{Camera, Maps, PixelMaps, RayKind, Rendered, Scene, Settings, Tracer, Vec3};
+use raylab::{Camera, Keep, RayKind, Rendered, Scene, Settings, Tracer, Vec3};
 use rayon::prelude::*;
 
 use crate::EightRays;
@@ -62,18 +62,17 @@ thread_local! {
 }
 
 /// Render `scene` as `step`'s chapter would, eight rays at a time; the
-/// image, the ray counts and (with [`Maps::Keep`]) the per-pixel maps
-/// equal `raylab::render`'s.
+/// images, the ray counts and (as `keep` asks) the per-pixel maps equal
+/// `raylab::render`'s.
 pub fn render_waves(
     scene: &Scene,
     camera: &Camera,
     step: &EightRays,
     settings: &Settings,
-    maps: Maps,
+    keep: Keep,
     progress: &ProgressBar,
 ) -> Rendered {
     let start = Instant::now();
-    let (width, height) = (settings.width as usize, settings.height as usize);
     let features = step.like.features();
     let setup = Setup {
         primary: Primary::new(camera, settings),
@@ -82,24 +81,16 @@ pub fn render_waves(
         features,
         max_depth: settings.max_depth,
         epsilon: settings.epsilon,
-        maps: maps == Maps::Keep,
+        maps: keep.maps,
     };
-    let mut colours = Vec::with_capacity(width * height);
-    colours.par_extend(rayon::iter::repeat_n(Vec3::ZERO, width * height));
-    let mut pixel_maps = setup.maps.then(|| PixelMaps::zeroed(width * height));
-    let map_rows = map_rows(pixel_maps.as_mut(), width, height);
-    let tally = colours
-        .par_chunks_mut(width)
-        .zip(map_rows)
+    let mut outputs = Outputs::new(settings.width, settings.height, keep);
+    let tally = outputs
+        .rows()
         .enumerate()
         .map_init(
             || Tracer::new(scene, step, settings.max_depth, settings.epsilon),
-            |scalar, (j, (colour_row, map_row))| {
-                let row = Row {
-                    j: j as u32,
-                    colours: colour_row,
-                    maps: map_row,
-                };
+            |scalar, (j, out)| {
+                let row = Row { j: j as u32, out };
                 let tally = WAVES.with_borrow_mut(|waves| {
                     let mut worker = Worker { waves, scalar };
                     render_row(&mut worker, &setup, camera, settings, row)
@@ -109,22 +100,13 @@ pub fn render_waves(
             },
         )
         .reduce(RowTally::default, |a, b| a + b);
-    Rendered {
-        settings: *settings,
-        image: LinearImage::from_pixels(settings.width, settings.height, colours),
-        maps: pixel_maps,
-        counts: tally.counts,
-        elapsed: start.elapsed(),
-        non_finite: tally.non_finite,
-        over_budget: tally.over_budget,
-    }
+    outputs.finish(settings, tally, start)
 }
 
-/// One image row's outputs: its colours and, when kept, its maps' rows.
+/// One image row: its number, and its share of the outputs.
 struct Row<'a> {
     j: u32,
-    colours: &'a mut [Vec3],
-    maps: Option<(&'a mut [u8], &'a mut [u32])>,
+    out: RowOutputs<'a>,
 }
 
 // ANCHOR: row
@@ -147,7 +129,7 @@ fn render_row(
         counts: waves.counts,
         ..RowTally::default()
     };
-    for (i, colour) in row.colours.iter_mut().enumerate() {
+    for i in 0..settings.width as usize {
         let mut sum = Vec3::ZERO;
         let (mut deepest, mut rays) = (0, 0);
         for k in 0..spp {
@@ -174,16 +156,10 @@ fn render_row(
             };
             sum += traced;
         }
-        let average = sum / spp as f32;
-        *colour = if average.is_finite() {
-            average
-        } else {
+        if !row.out.set_colour(i, sum / spp as f32) {
             tally.non_finite += 1;
-            Vec3::ZERO
-        };
-        if let Some((deepest_row, rays_row)) = &mut row.maps {
-            (deepest_row[i], rays_row[i]) = (deepest, rays);
         }
+        row.out.set_maps(i, deepest, rays);
     }
     tally
 }

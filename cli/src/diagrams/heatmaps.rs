@@ -2,7 +2,7 @@
 
 use image::RgbImage;
 
-use raylab::render::{PixelMaps, Rendered};
+use raylab::{PixelMaps, Rendered};
 use raylab_plot::{Colormap, ColourScale, HeatmapFigure};
 
 /// A short description of the settings, for captions.
