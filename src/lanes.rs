@@ -252,11 +252,32 @@ impl CameraX8 {
     /// pixels, one per lane.
     #[inline]
     pub fn directions(&self, column: f32x8, row: f32x8) -> Vec3x8 {
+        self.through(self.across(column), self.down(row))
+    }
+
+    /// The part of a direction that depends only on the point's column:
+    /// `forward + right · x`. The same for every row, so a tracer that
+    /// makes the same columns in every row can work it out once.
+    #[inline]
+    pub fn across(&self, column: f32x8) -> Vec3x8 {
         let two = f32x8::splat(2.0);
-        let (w, h) = self.size;
-        let x = (two * column / w - f32x8::ONE) * self.half_height * self.aspect;
-        let y = (f32x8::ONE - two * row / h) * self.half_height;
-        (self.forward + self.right.scale(x) + self.up.scale(y)).normalize()
+        let x = (two * column / self.size.0 - f32x8::ONE) * self.half_height * self.aspect;
+        self.forward + self.right.scale(x)
+    }
+
+    /// The part that depends only on the point's row: `y`, the distance
+    /// up the image plane.
+    #[inline]
+    pub fn down(&self, row: f32x8) -> f32x8 {
+        let two = f32x8::splat(2.0);
+        (f32x8::ONE - two * row / self.size.1) * self.half_height
+    }
+
+    /// The unit direction from the two parts: `forward + right · x + up ·
+    /// y`, added in that order as `Camera::ray` adds them, and normalised.
+    #[inline]
+    pub fn through(&self, across: Vec3x8, y: f32x8) -> Vec3x8 {
+        (across + self.up.scale(y)).normalize()
     }
 }
 

@@ -3,7 +3,7 @@
 use raylab::{Camera, RayKind, Settings};
 use wide::f32x8;
 
-use raylab::lanes::CameraX8;
+use raylab::lanes::{CameraX8, Vec3x8};
 
 use crate::soa::{Group, LANES};
 use crate::wave::END;
@@ -19,11 +19,14 @@ pub struct PrimaryRays<'a> {
     primary: &'a Primary,
     j: u32,
     spp: usize,
+    /// When every pixel has the same points: per group of the period, the
+    /// lanes' rows' part of their directions ([`CameraX8::down`]).
+    down: [f32x8; MAX_PERIOD],
 }
 
 /// What every row's primary rays share, made once per image: the camera
-/// in lanes and, for points that are the same in every pixel, the lanes'
-/// places.
+/// in lanes and, for points that are the same in every pixel, what the
+/// rows share of their directions.
 pub struct Primary {
     camera: CameraX8,
     repeating: Option<Repeating>,
@@ -31,10 +34,9 @@ pub struct Primary {
 
 impl Primary {
     pub fn new(camera: &Camera, settings: &Settings) -> Self {
-        Primary {
-            camera: CameraX8::new(camera, settings.width, settings.height),
-            repeating: Repeating::new(&settings.sampling),
-        }
+        let camera = CameraX8::new(camera, settings.width, settings.height);
+        let repeating = Repeating::new(&settings.sampling, &camera, settings.width);
+        Primary { camera, repeating }
     }
 }
 
@@ -42,55 +44,60 @@ impl Primary {
 /// 32 and the squares up to 256; others use the general loop).
 const MAX_PERIOD: usize = 32;
 
-/// Where the lanes' samples lie when every pixel has the same points (the
-/// pixel centre, the lab's five, the grid). Sample `s` is pixel `s / spp`'s
-/// point `s % spp`, so the lanes' pattern repeats every `lcm(spp, 8)`
-/// samples: `period` groups, `pixels` pixels further on. One period's
-/// offsets are worked out once per image, and each group adds its first
-/// pixel and its row to them in registers, instead of finding eight points
-/// one lane at a time.
+/// What the rows share when every pixel has the same points (the pixel
+/// centre, the lab's five, the grid). Sample `s` is pixel `s / spp`'s
+/// point `s % spp`, so the lanes' points repeat every `lcm(spp, 8)`
+/// samples: `period` groups, `pixels` pixels further on. And each row has
+/// the same columns: a direction's part that depends on the column alone
+/// (`forward + right · x`, with its two divisions) is worked out once per
+/// image for every group of a row, and each row adds its own part to it.
 struct Repeating {
     period: usize,
-    pixels: usize,
-    /// Per group of the period: each lane's pixel counted from the
-    /// period's first (a whole number), and its point's offset.
-    pixel: [f32x8; MAX_PERIOD],
-    sx: [f32x8; MAX_PERIOD],
+    /// Per group of the period: each lane's point's offset down the pixel.
     sy: [f32x8; MAX_PERIOD],
+    /// Per whole group of a row: the lanes' directions' column part.
+    across: Vec<Vec3x8>,
 }
 
 impl Repeating {
-    fn new(sampling: &raylab::Sampling) -> Option<Repeating> {
+    fn new(sampling: &raylab::Sampling, camera: &CameraX8, width: u32) -> Option<Repeating> {
         if sampling.is_random() {
             return None;
         }
         let spp = sampling.spp() as usize;
         let samples = spp * LANES / gcd(spp, LANES);
-        let period = samples / LANES;
+        let (period, pixels) = (samples / LANES, samples / spp);
         if period > MAX_PERIOD {
             return None;
         }
         // Any pixel's points are every pixel's: the first stands in.
         let points = sampling.pixel((0, 0));
-        let mut repeating = Repeating {
-            period,
-            pixels: samples / spp,
-            pixel: [f32x8::ZERO; MAX_PERIOD],
-            sx: [f32x8::ZERO; MAX_PERIOD],
-            sy: [f32x8::ZERO; MAX_PERIOD],
-        };
+        let mut sy = [f32x8::ZERO; MAX_PERIOD];
+        // Per group of the period: each lane's pixel counted from the
+        // period's first (a whole number), and its point's offset across.
+        let mut pixel = [f32x8::ZERO; MAX_PERIOD];
+        let mut sx = [f32x8::ZERO; MAX_PERIOD];
         for group in 0..period {
-            let (mut pixel, mut sx, mut sy) = ([0.0; LANES], [0.0; LANES], [0.0; LANES]);
+            let (mut p, mut x, mut y) = ([0.0; LANES], [0.0; LANES], [0.0; LANES]);
             for lane in 0..LANES {
                 let sample = group * LANES + lane;
-                pixel[lane] = (sample / spp) as f32;
-                (sx[lane], sy[lane]) = points.offset((sample % spp) as u32);
+                p[lane] = (sample / spp) as f32;
+                (x[lane], y[lane]) = points.offset((sample % spp) as u32);
             }
-            repeating.pixel[group] = f32x8::from(pixel);
-            repeating.sx[group] = f32x8::from(sx);
-            repeating.sy[group] = f32x8::from(sy);
+            (pixel[group], sx[group], sy[group]) = (p.into(), x.into(), y.into());
         }
-        Some(repeating)
+        let groups = width as usize * spp / LANES;
+        let across = (0..groups)
+            .map(|group| {
+                let (first, phase) = (group / period * pixels, group % period);
+                // `i as f32 + sx` as the scalar camera adds it: the pixel's
+                // number is a whole number, exact in an f32, and so is the
+                // sum of its two parts.
+                let column = (f32x8::splat(first as f32) + pixel[phase]) + sx[phase];
+                camera.across(column)
+            })
+            .collect();
+        Some(Repeating { period, sy, across })
     }
 }
 
@@ -101,11 +108,18 @@ fn gcd(a: usize, b: usize) -> usize {
 impl<'a> PrimaryRays<'a> {
     /// Row `j`'s primary rays, from what the image's rows share.
     pub fn new(primary: &'a Primary, settings: &'a Settings, j: u32) -> Self {
+        let mut down = [f32x8::ZERO; MAX_PERIOD];
+        if let Some(repeating) = &primary.repeating {
+            for (down, sy) in down.iter_mut().zip(&repeating.sy[..repeating.period]) {
+                *down = primary.camera.down(f32x8::splat(j as f32) + *sy);
+            }
+        }
         PrimaryRays {
             settings,
             primary,
             j,
             spp: settings.sampling.spp() as usize,
+            down,
         }
     }
 
@@ -123,18 +137,16 @@ impl<'a> PrimaryRays<'a> {
     pub fn group(&self, group: usize) -> Group {
         let first = group * LANES;
         let count = (self.len() - first).min(LANES);
-        let (column, row) = match &self.primary.repeating {
+        let camera = &self.primary.camera;
+        let direction = match &self.primary.repeating {
             Some(repeating) if count == LANES => {
-                let (period, phase) = (group / repeating.period, group % repeating.period);
-                // `i as f32 + sx` as the scalar camera adds it: the pixel's
-                // number is a whole number, exact in an f32, and so is the
-                // sum of its two parts below.
-                let first_pixel = f32x8::splat((period * repeating.pixels) as f32);
-                let column = (first_pixel + repeating.pixel[phase]) + repeating.sx[phase];
-                let row = f32x8::splat(self.j as f32) + repeating.sy[phase];
-                (column, row)
+                let down = self.down[group % repeating.period];
+                camera.through(repeating.across[group], down)
             }
-            _ => self.places(first, count),
+            _ => {
+                let (column, row) = self.places(first, count);
+                camera.directions(column, row)
+            }
         };
         // Padding lanes are sample 0's: traced, and never read.
         let sample = std::array::from_fn(|lane| {
@@ -145,8 +157,8 @@ impl<'a> PrimaryRays<'a> {
             }
         });
         Group {
-            origin: self.primary.camera.eye,
-            direction: self.primary.camera.directions(column, row),
+            origin: camera.eye,
+            direction,
             weight: f32x8::ONE,
             sample,
             kind: [RayKind::Primary; LANES],
