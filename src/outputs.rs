@@ -150,6 +150,7 @@ impl RowOutputs<'_> {
     /// linear light): kept if asked, and encoded to its three bytes right
     /// away, while the row is in the cache. A NaN or infinite colour is
     /// set to black; the answer is whether the colour was finite.
+    #[inline]
     pub fn set_colour(&mut self, i: usize, colour: Vec3) -> bool {
         let finite = colour.is_finite();
         let colour = if finite { colour } else { Vec3::ZERO };

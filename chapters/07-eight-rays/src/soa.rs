@@ -100,6 +100,7 @@ impl Rays {
     // ANCHOR: packed
     /// Append the lanes of `rays` that `mask` selects (lane `k` in bit
     /// `k`), packed densely in lane order; there must be room for them.
+    #[inline]
     pub fn push_packed(&mut self, mask: i32, rays: &Group) {
         let records = rays.records();
         let at = self.len..self.len + LANES;
