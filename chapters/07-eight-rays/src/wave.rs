@@ -246,6 +246,11 @@ impl Waves {
         self.rays.clear();
         self.next.clear();
         self.ledger.clear();
+        // Room for a typical row from the start (chapter 5's trees hold
+        // about 2.8 rays besides their shadow rays): a ledger that grew by
+        // doubling would copy itself over, into fresh pages, on the first
+        // rows of every worker.
+        self.ledger.reserve(4 * samples);
         self.kinds.clear();
         self.counting = budget_matters(setup.max_depth);
         self.sample_rays.clear();
