@@ -102,6 +102,9 @@ impl Rays {
     /// `k`), packed densely in lane order; there must be room for them.
     #[inline]
     pub fn push_packed(&mut self, mask: i32, rays: &Group) {
+        if mask == 0 {
+            return;
+        }
         let records = rays.records();
         let at = self.len..self.len + LANES;
         let (to, kinds, afters) = (
@@ -131,6 +134,23 @@ impl Rays {
         self.len += packed;
     }
     // ANCHOR_END: packed
+
+    /// Append `other`'s rays; there must be room for them.
+    pub fn append(&mut self, other: &Rays) {
+        let (at, n) = (self.len, other.len);
+        self.records[at..at + n].copy_from_slice(&other.records[..n]);
+        self.kind[at..at + n].copy_from_slice(&other.kind[..n]);
+        self.after[at..at + n].copy_from_slice(&other.after[..n]);
+        self.len += n;
+    }
+
+    /// Make the provisional links in `after` final (see
+    /// [`crate::wave::settled`]).
+    pub fn settle(&mut self, base: u32) {
+        for after in &mut self.after[..self.len] {
+            *after = crate::wave::settled(*after, base);
+        }
+    }
 
     /// The real rays (without the padding).
     pub fn len(&self) -> usize {

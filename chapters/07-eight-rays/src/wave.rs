@@ -96,6 +96,13 @@ impl Ledger {
     fn reserve(&mut self, more: usize) {
         self.entries.reserve(more + LANES);
     }
+
+    /// Make the provisional links of the entries from `from` on final.
+    fn settle(&mut self, from: usize, base: u32) {
+        for entry in &mut self.entries[from..] {
+            entry.next = settled(entry.next, base);
+        }
+    }
 }
 
 /// The fixed part of a render: the scene in lanes, the light, the limits.
@@ -124,6 +131,8 @@ struct Shaded {
     transmitted: Option<(Vec3x8, Vec3x8, f32x8)>,
     reflection: f32x8,
     transmission: f32x8,
+    /// Set where the ray arrived from outside its surface.
+    entering: f32x8,
 }
 
 // ANCHOR: group
@@ -146,6 +155,7 @@ fn shade_group(setup: &Setup, rays: &Group, can_send: bool) -> Shaded {
         transmitted: None,
         reflection: f32x8::ZERO,
         transmission: f32x8::ZERO,
+        entering: f32x8::ZERO,
     };
     // Divergence, the cheap way out: when all eight rays see the sky,
     // none of the surface work below is needed.
@@ -178,6 +188,7 @@ fn shade_group(setup: &Setup, rays: &Group, can_send: bool) -> Shaded {
     // Mask: lanes that hit something show their surface, the others the sky.
     shaded.added = Vec3x8::select(hits.hit, surface, sky);
 
+    shaded.entering = s.entering;
     let (reflects, transmits) = senders(&s, &hits, setup.features);
     shaded.reflects = reflects;
     shaded.transmits = transmits;
@@ -215,6 +226,10 @@ pub struct Waves {
     /// arrays, swapped after each wave, serve every depth, and their
     /// memory stays warm in the cache from row to row.
     next: Rays,
+    /// The rays sent on that travel inside a sphere, kept apart while the
+    /// wave is traced and then put after the others in `next`, so that
+    /// groups of the next wave hold rays that do the same things.
+    inside: Rays,
     /// Every traced ray's light and link, numbered wave after wave.
     pub ledger: Ledger,
     /// Per ledger entry, the ray's kind and whether it cast a shadow ray;
@@ -245,6 +260,7 @@ impl Waves {
     pub fn start(&mut self, samples: usize, setup: &Setup) {
         self.rays.clear();
         self.next.clear();
+        self.inside.clear();
         self.ledger.clear();
         // Room for a typical row from the start (chapter 5's trees hold
         // about 2.8 rays besides their shadow rays): a ledger that grew by
@@ -295,7 +311,7 @@ impl Waves {
     /// `next`.
     fn trace_wave(&mut self, setup: &Setup, depth: usize, primary: Option<&PrimaryRays>) {
         let can_send = depth < setup.max_depth as usize;
-        let (rays, next) = (&mut self.rays, &mut self.next);
+        let (rays, next, inside) = (&mut self.rays, &mut self.next, &mut self.inside);
         let len = match primary {
             Some(primary) => primary.len(),
             None => {
@@ -307,7 +323,9 @@ impl Waves {
         let next_wave_starts = (self.ledger.len() + len) as u32;
         if can_send {
             next.make_room(2 * len);
+            inside.make_room(2 * len);
         }
+        let wave_starts = self.ledger.len();
         self.ledger.reserve(len);
         let mut per_sample = PerSample {
             rays: &mut self.sample_rays,
@@ -334,6 +352,7 @@ impl Waves {
             let mut sends = Sends {
                 reflects: shaded.reflects.move_mask() & real,
                 transmits: shaded.transmits.move_mask() & real,
+                ..Sends::NONE
             };
             if !can_send {
                 sends = Sends::NONE;
@@ -342,7 +361,20 @@ impl Waves {
                 per_sample.count(&eight, lanes, cast_shadow, &mut sends);
             }
             if sends.any() {
-                let first = next_wave_starts + next.len() as u32;
+                // Sorting: rays that travel inside a sphere (transmitted
+                // into it, or reflected inside it, totally or not) are
+                // packed apart from the others. In the lab's scene half
+                // the rays of the deeper waves bounce inside the glass and
+                // half leave it for the ground or the sky: mixed, a group
+                // would run the glass's optics and the ground's checker
+                // and shadow ray both; sorted, most groups run one.
+                let total = shaded.transmitted.map_or(f32x8::ZERO, |t| t.2);
+                sends.transmits_inside = sends.transmits & (shaded.entering | total).move_mask();
+                sends.reflects_inside = sends.reflects & (!shaded.entering).move_mask();
+                let first = [
+                    next_wave_starts + next.len() as u32,
+                    LATER | inside.len() as u32,
+                ];
                 let links = Links::new(&sends, first, eight.after);
                 self.ledger.push_group(shaded.added, links.next, lanes);
                 pack_children(
@@ -350,7 +382,7 @@ impl Waves {
                     &sends,
                     eight.sample,
                     &links,
-                    next,
+                    [&mut *next, &mut *inside],
                     &mut self.counts,
                 );
             } else {
@@ -359,6 +391,16 @@ impl Waves {
             }
         }
         self.counts.0[RayKind::Shadow.index()] += u64::from(shadows);
+        // The rays inside spheres go after the others: now their numbers
+        // are known, and the links to them are made final.
+        if !inside.is_empty() {
+            let base = next_wave_starts + next.len() as u32;
+            self.ledger.settle(wave_starts, base);
+            next.settle(base);
+            inside.settle(base);
+            next.append(inside);
+            inside.clear();
+        }
     }
 }
 
@@ -397,16 +439,23 @@ impl PerSample<'_> {
 
 // ANCHOR: pack
 /// Which lanes of a group send on a reflected and a transmitted ray, lane
-/// `k` in bit `k`.
+/// `k` in bit `k`, and which of those rays travel inside a sphere.
 struct Sends {
     reflects: i32,
     transmits: i32,
+    /// Of the reflected rays, those reflected inside a sphere's surface.
+    reflects_inside: i32,
+    /// Of the transmitted rays, those that go into a sphere, or stay in
+    /// it by total internal reflection.
+    transmits_inside: i32,
 }
 
 impl Sends {
     const NONE: Sends = Sends {
         reflects: 0,
         transmits: 0,
+        reflects_inside: 0,
+        transmits_inside: 0,
     };
 
     fn any(&self) -> bool {
@@ -414,10 +463,12 @@ impl Sends {
     }
 }
 
-/// The ledger's links of a group whose rays send rays on. The group's
-/// transmitted rays are packed into the next wave first, from number
-/// `first` on, then its reflected ones; the scalar stack pops a ray's
-/// transmitted child first, then its reflected one, then goes on `after`.
+/// The ledger's links of a group whose rays send rays on. The next wave's
+/// rays are packed in two places, the rays outside spheres (numbered from
+/// `first[0]` on) and those inside (numbered provisionally from `first[1]`,
+/// see [`LATER`]). Each place takes the group's transmitted rays first,
+/// then its reflected ones. The scalar stack pops a ray's transmitted
+/// child first, then its reflected one, then goes on `after`.
 struct Links {
     /// Each lane's link: its first child, or `after` if it sent nothing.
     next: [u32; LANES],
@@ -428,39 +479,68 @@ struct Links {
 }
 
 impl Links {
-    fn new(sends: &Sends, first: u32, after: [u32; LANES]) -> Links {
+    fn new(sends: &Sends, first: [u32; 2], after: [u32; LANES]) -> Links {
         let (t, r) = (sends.transmits, sends.reflects);
+        let (ti, ri) = (sends.transmits_inside, sends.reflects_inside);
+        // Per place (outside, inside): the transmitted rays packed there,
+        // the reflected ones, and the number of the first.
+        let places = [(t & !ti, r & !ri, first[0]), (ti, ri, first[1])];
         let mut links = Links {
             next: after,
             transmitted_after: after,
             reflected_after: after,
         };
         for lane in 0..LANES {
+            let bit = 1 << lane;
             // The lanes before this one, whose children are packed first.
-            let before = (1 << lane) - 1;
-            let transmitted = first + (t & before).count_ones();
-            let reflected = first + t.count_ones() + (r & before).count_ones();
-            if r & (1 << lane) != 0 {
+            let before = bit - 1;
+            let number = |inside: i32, transmitted: bool| {
+                let (pt, pr, first) = places[usize::from(inside & bit != 0)];
+                if transmitted {
+                    first + (pt & before).count_ones()
+                } else {
+                    first + pt.count_ones() + (pr & before).count_ones()
+                }
+            };
+            if r & bit != 0 {
+                let reflected = number(ri, false);
                 links.next[lane] = reflected;
                 links.transmitted_after[lane] = reflected;
             }
-            if t & (1 << lane) != 0 {
-                links.next[lane] = transmitted;
+            if t & bit != 0 {
+                links.next[lane] = number(ti, true);
             }
         }
         links
     }
 }
 
+/// The mark of a provisional ray number: the ray's place among the next
+/// wave's rays inside spheres. Those go after the rays outside, whose count
+/// is known only once the whole wave is traced; then `settled` makes the
+/// number final.
+pub const LATER: u32 = 1 << 31;
+
+/// A ray number made final: a provisional one counted on from `base`
+/// (the first number after the rays outside spheres), any other as it is.
+pub fn settled(number: u32, base: u32) -> u32 {
+    if number != END && number & LATER != 0 {
+        base + (number & !LATER)
+    } else {
+        number
+    }
+}
+
 /// Append the group's transmitted rays, then its reflected ones, to the
-/// next wave, each packed densely in lane order, and count them by kind:
+/// next wave, each packed densely in lane order: the rays that travel
+/// inside a sphere to `inside`, the others to `next`. Count them by kind:
 /// every ray sent on is traced.
 fn pack_children(
     shaded: &Shaded,
     sends: &Sends,
     sample: [u32; LANES],
     links: &Links,
-    next: &mut Rays,
+    [next, inside]: [&mut Rays; 2],
     counts: &mut RayCounts,
 ) {
     // Mask: where the light cannot leave the glass, the "transmitted" ray
@@ -490,7 +570,8 @@ fn pack_children(
             kind,
             after: links.transmitted_after,
         };
-        next.push_packed(sends.transmits, &rays);
+        next.push_packed(sends.transmits & !sends.transmits_inside, &rays);
+        inside.push_packed(sends.transmits_inside, &rays);
     }
     if let Some((origin, direction)) = shaded.reflected
         && sends.reflects != 0
@@ -503,7 +584,8 @@ fn pack_children(
             kind: [RayKind::Reflection; LANES],
             after: links.reflected_after,
         };
-        next.push_packed(sends.reflects, &rays);
+        next.push_packed(sends.reflects & !sends.reflects_inside, &rays);
+        inside.push_packed(sends.reflects_inside, &rays);
     }
 }
 // ANCHOR_END: pack
@@ -521,9 +603,10 @@ mod tests {
         let sends = Sends {
             transmits: 0b0100_0010,
             reflects: 0b0000_1010,
+            ..Sends::NONE
         };
         let after: [u32; LANES] = std::array::from_fn(|lane| 10 + lane as u32);
-        let links = Links::new(&sends, 100, after);
+        let links = Links::new(&sends, [100, LATER], after);
         assert_eq!(links.next, [10, 100, 12, 103, 14, 15, 101, 17]);
         // Lane 1's transmitted ray goes on with its sibling (102), lane 6's
         // with what lane 6 went on with.
@@ -531,5 +614,27 @@ mod tests {
         assert_eq!(links.transmitted_after[6], 16);
         assert_eq!(links.reflected_after[1], 11);
         assert_eq!(links.reflected_after[3], 13);
+    }
+
+    #[test]
+    fn rays_inside_a_sphere_are_numbered_after_the_others_once_the_wave_is_done() {
+        // As above, but lane 1's transmitted ray goes into the glass and
+        // lane 3's reflected ray stays inside it. The others are packed
+        // from 100 (lane 6's transmitted ray, then lane 1's reflected
+        // one); the two inside get provisional numbers, and once the wave
+        // is done they follow the others: 102 and 103.
+        let sends = Sends {
+            transmits: 0b0100_0010,
+            reflects: 0b0000_1010,
+            transmits_inside: 0b0000_0010,
+            reflects_inside: 0b0000_1000,
+        };
+        let after: [u32; LANES] = std::array::from_fn(|lane| 10 + lane as u32);
+        let links = Links::new(&sends, [100, LATER], after);
+        let settle = |numbers: [u32; LANES]| numbers.map(|n| settled(n, 102));
+        assert_eq!(settle(links.next), [10, 102, 12, 103, 14, 15, 100, 17]);
+        assert_eq!(links.transmitted_after[1], 101);
+        assert_eq!(links.transmitted_after[6], 16);
+        assert_eq!(settled(END, 102), END);
     }
 }
