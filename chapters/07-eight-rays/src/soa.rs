@@ -145,10 +145,10 @@ impl Rays {
     }
 
     /// Make the provisional links in `after` final (see
-    /// [`crate::wave::settled`]).
+    /// [`crate::wave::settle`]).
     pub fn settle(&mut self, base: u32) {
         for after in &mut self.after[..self.len] {
-            *after = crate::wave::settled(*after, base);
+            crate::wave::settle(after, base);
         }
     }
 

@@ -100,7 +100,7 @@ impl Ledger {
     /// Make the provisional links of the entries from `from` on final.
     fn settle(&mut self, from: usize, base: u32) {
         for entry in &mut self.entries[from..] {
-            entry.next = settled(entry.next, base);
+            settle(&mut entry.next, base);
         }
     }
 }
@@ -521,13 +521,12 @@ impl Links {
 /// number final.
 pub const LATER: u32 = 1 << 31;
 
-/// A ray number made final: a provisional one counted on from `base`
-/// (the first number after the rays outside spheres), any other as it is.
-pub fn settled(number: u32, base: u32) -> u32 {
-    if number != END && number & LATER != 0 {
-        base + (number & !LATER)
-    } else {
-        number
+/// Make a ray number final: a provisional one is counted on from `base`
+/// (the first number after the rays outside spheres), any other is left
+/// as it is (and not written: most are final already).
+pub fn settle(number: &mut u32, base: u32) {
+    if *number != END && *number & LATER != 0 {
+        *number = base + (*number & !LATER);
     }
 }
 
@@ -631,10 +630,13 @@ mod tests {
         };
         let after: [u32; LANES] = std::array::from_fn(|lane| 10 + lane as u32);
         let links = Links::new(&sends, [100, LATER], after);
-        let settle = |numbers: [u32; LANES]| numbers.map(|n| settled(n, 102));
-        assert_eq!(settle(links.next), [10, 102, 12, 103, 14, 15, 100, 17]);
+        let mut next = links.next;
+        next.iter_mut().for_each(|n| settle(n, 102));
+        assert_eq!(next, [10, 102, 12, 103, 14, 15, 100, 17]);
         assert_eq!(links.transmitted_after[1], 101);
         assert_eq!(links.transmitted_after[6], 16);
-        assert_eq!(settled(END, 102), END);
+        let mut end = END;
+        settle(&mut end, 102);
+        assert_eq!(end, END);
     }
 }
