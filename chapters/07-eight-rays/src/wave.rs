@@ -43,6 +43,9 @@ pub const END: u32 = u32::MAX;
 #[derive(Clone, Debug, Default)]
 pub struct Ledger {
     entries: Vec<Entry>,
+    /// The entries whose link is provisional (see [`LATER`]) until the
+    /// wave is done.
+    unsettled: Vec<u32>,
 }
 
 /// One ray's entry: the light it added, and the ray popped after it.
@@ -57,6 +60,7 @@ struct Entry {
 impl Ledger {
     pub fn clear(&mut self) {
         self.entries.clear();
+        self.unsettled.clear();
     }
 
     /// How many rays are in the ledger: the number the next one gets.
@@ -97,10 +101,18 @@ impl Ledger {
         self.entries.reserve(more + LANES);
     }
 
-    /// Make the provisional links of the entries from `from` on final.
-    fn settle(&mut self, from: usize, base: u32) {
-        for entry in &mut self.entries[from..] {
-            settle(&mut entry.next, base);
+    /// Note that the links of the lanes of `unsettled` (lane `k` in bit
+    /// `k`) of the group whose first entry is `first` are provisional.
+    fn unsettled(&mut self, first: usize, unsettled: i32) {
+        let lanes = raylab::lanes::lanes_of(unsettled as u32);
+        self.unsettled
+            .extend(lanes.map(|lane| (first + lane) as u32));
+    }
+
+    /// Make the provisional links final.
+    fn settle(&mut self, base: u32) {
+        for entry in self.unsettled.drain(..) {
+            settle(&mut self.entries[entry as usize].next, base);
         }
     }
 }
@@ -325,7 +337,6 @@ impl Waves {
             next.make_room(2 * len);
             inside.make_room(2 * len);
         }
-        let wave_starts = self.ledger.len();
         self.ledger.reserve(len);
         let mut per_sample = PerSample {
             rays: &mut self.sample_rays,
@@ -376,7 +387,9 @@ impl Waves {
                     LATER | inside.len() as u32,
                 ];
                 let links = Links::new(&sends, first, eight.after);
+                let entry = self.ledger.len();
                 self.ledger.push_group(shaded.added, links.next, lanes);
+                self.ledger.unsettled(entry, links.unsettled);
                 pack_children(
                     &shaded,
                     &sends,
@@ -395,7 +408,7 @@ impl Waves {
         // are known, and the links to them are made final.
         if !inside.is_empty() {
             let base = next_wave_starts + next.len() as u32;
-            self.ledger.settle(wave_starts, base);
+            self.ledger.settle(base);
             next.settle(base);
             inside.settle(base);
             next.append(inside);
@@ -476,6 +489,8 @@ struct Links {
     transmitted_after: [u32; LANES],
     /// The reflected children's: their parent's `after`.
     reflected_after: [u32; LANES],
+    /// The lanes whose link (`next`) is provisional: a child inside.
+    unsettled: i32,
 }
 
 impl Links {
@@ -489,6 +504,7 @@ impl Links {
             next: after,
             transmitted_after: after,
             reflected_after: after,
+            unsettled: (t & ti) | (r & !t & ri),
         };
         for lane in 0..LANES {
             let bit = 1 << lane;
@@ -630,6 +646,7 @@ mod tests {
         };
         let after: [u32; LANES] = std::array::from_fn(|lane| 10 + lane as u32);
         let links = Links::new(&sends, [100, LATER], after);
+        assert_eq!(links.unsettled, 0b0000_1010, "lanes 1 and 3 link inside");
         let mut next = links.next;
         next.iter_mut().for_each(|n| settle(n, 102));
         assert_eq!(next, [10, 102, 12, 103, 14, 15, 100, 17]);
