@@ -45,6 +45,31 @@ fn count_sample(waves: &Waves, sample: usize, counts: &mut RayCounts) {
     }
 }
 
+/// Sample `k` of pixel (`i`, `j`), whose tree reached the ray budget,
+/// traced again by the scalar tracer, its wave-traced rays taken back out
+/// of the row's counts. Rare, and kept out of the pixel loop.
+#[cold]
+fn trace_again(
+    waves: &Waves,
+    scalar: &mut Tracer<'_, EightRays>,
+    camera: &Camera,
+    settings: &Settings,
+    (i, j, k): (usize, u32, usize),
+    tally: &mut RowTally,
+) -> raylab::trace::Traced {
+    let sample = i * settings.sampling.spp() as usize + k;
+    let mut waved = RayCounts::default();
+    count_sample(waves, sample, &mut waved);
+    tally.counts = tally.counts - waved;
+    let before = scalar.counts();
+    let offset = settings.sampling.offset((i as u32, j), k as u32);
+    let ray = camera.ray(i as u32, j, offset, settings.width, settings.height);
+    let traced = scalar.trace(ray);
+    tally.counts = tally.counts + (scalar.counts() - before);
+    tally.over_budget += u64::from(traced.over_budget);
+    traced
+}
+
 /// One worker's tools: its waves, and a scalar tracer for the rare sample
 /// whose tree reaches the ray budget.
 struct Worker<'w, 's> {
@@ -135,15 +160,14 @@ fn render_row(
         for k in 0..spp {
             let sample = i * spp + k;
             let traced = if waves.over_budget(sample) {
-                let mut waved = RayCounts::default();
-                count_sample(waves, sample, &mut waved);
-                tally.counts = tally.counts - waved;
-                let before = worker.scalar.counts();
-                let offset = settings.sampling.offset((i as u32, j), k as u32);
-                let ray = camera.ray(i as u32, j, offset, settings.width, settings.height);
-                let scalar = worker.scalar.trace(ray);
-                tally.counts = tally.counts + (worker.scalar.counts() - before);
-                tally.over_budget += u64::from(scalar.over_budget);
+                let scalar = trace_again(
+                    waves,
+                    worker.scalar,
+                    camera,
+                    settings,
+                    (i, j, k),
+                    &mut tally,
+                );
                 deepest = deepest.max(scalar.deepest as u8);
                 rays += scalar.rays;
                 scalar.colour
