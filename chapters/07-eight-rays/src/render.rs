@@ -46,12 +46,11 @@ fn count_sample(waves: &Waves, sample: usize, counts: &mut RayCounts) {
 }
 
 /// Sample `k` of pixel (`i`, `j`), whose tree reached the ray budget,
-/// traced again by the scalar tracer, its wave-traced rays taken back out
-/// of the row's counts. Rare, and kept out of the pixel loop.
+/// traced again by a scalar tracer made for it, its wave-traced rays taken
+/// back out of the row's counts. Rare, and kept out of the pixel loop.
 #[cold]
 fn trace_again(
-    waves: &Waves,
-    scalar: &mut Tracer<'_, EightRays>,
+    worker: &Worker<'_, '_>,
     camera: &Camera,
     settings: &Settings,
     (i, j, k): (usize, u32, usize),
@@ -59,30 +58,36 @@ fn trace_again(
 ) -> raylab::trace::Traced {
     let sample = i * settings.sampling.spp() as usize + k;
     let mut waved = RayCounts::default();
-    count_sample(waves, sample, &mut waved);
+    count_sample(worker.waves, sample, &mut waved);
     tally.counts = tally.counts - waved;
-    let before = scalar.counts();
+    let mut scalar = Tracer::new(
+        worker.scene,
+        worker.step,
+        settings.max_depth,
+        settings.epsilon,
+    );
     let offset = settings.sampling.offset((i as u32, j), k as u32);
     let ray = camera.ray(i as u32, j, offset, settings.width, settings.height);
     let traced = scalar.trace(ray);
-    tally.counts = tally.counts + (scalar.counts() - before);
+    tally.counts = tally.counts + scalar.counts();
     tally.over_budget += u64::from(traced.over_budget);
     traced
 }
 
-/// One worker's tools: its waves, and a scalar tracer for the rare sample
-/// whose tree reaches the ray budget.
+/// One worker's tools: its waves, and what a scalar tracer needs for the
+/// rare sample whose tree reaches the ray budget.
 struct Worker<'w, 's> {
     waves: &'w mut Waves,
-    scalar: &'w mut Tracer<'s, EightRays>,
+    scene: &'s Scene,
+    step: &'s EightRays,
 }
 
 thread_local! {
     /// Each thread's waves, kept from row to row and from render to
-    /// render. Rayon hands a render's rows out in some twenty pieces, and
-    /// waves made afresh for each would grow their arrays again from
-    /// nothing: new memory, whose pages the kernel must clear as they are
-    /// first written.
+    /// render. Rayon hands a render's rows out one at a time, and waves
+    /// made afresh for each would grow their arrays again from nothing:
+    /// new memory, whose pages the kernel must clear as they are first
+    /// written.
     static WAVES: RefCell<Waves> = RefCell::new(Waves::default());
 }
 
@@ -112,18 +117,15 @@ pub fn render_waves(
     let tally = outputs
         .rows()
         .enumerate()
-        .map_init(
-            || Tracer::new(scene, step, settings.max_depth, settings.epsilon),
-            |scalar, (j, out)| {
-                let row = Row { j: j as u32, out };
-                let tally = WAVES.with_borrow_mut(|waves| {
-                    let mut worker = Worker { waves, scalar };
-                    render_row(&mut worker, &setup, camera, settings, row)
-                });
-                progress.inc(1);
-                tally
-            },
-        )
+        .map(|(j, out)| {
+            let row = Row { j: j as u32, out };
+            let tally = WAVES.with_borrow_mut(|waves| {
+                let mut worker = Worker { waves, scene, step };
+                render_row(&mut worker, &setup, camera, settings, row)
+            });
+            progress.inc(1);
+            tally
+        })
         .reduce(RowTally::default, |a, b| a + b);
     outputs.finish(settings, tally, start)
 }
@@ -146,9 +148,9 @@ fn render_row(
 ) -> RowTally {
     let spp = settings.sampling.spp() as usize;
     let j = row.j;
-    let waves = &mut *worker.waves;
-    waves.start(settings.width as usize * spp, setup);
-    waves.trace(setup, &PrimaryRays::new(&setup.primary, settings, j));
+    worker.waves.start(settings.width as usize * spp, setup);
+    (worker.waves).trace(setup, &PrimaryRays::new(&setup.primary, settings, j));
+    let (worker, waves) = (&*worker, &*worker.waves);
 
     let mut tally = RowTally {
         counts: waves.counts,
@@ -160,14 +162,7 @@ fn render_row(
         for k in 0..spp {
             let sample = i * spp + k;
             let traced = if waves.over_budget(sample) {
-                let scalar = trace_again(
-                    waves,
-                    worker.scalar,
-                    camera,
-                    settings,
-                    (i, j, k),
-                    &mut tally,
-                );
+                let scalar = trace_again(worker, camera, settings, (i, j, k), &mut tally);
                 deepest = deepest.max(scalar.deepest as u8);
                 rays += scalar.rays;
                 scalar.colour
