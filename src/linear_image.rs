@@ -71,7 +71,7 @@ impl LinearImage {
             .zip(self.pixels.par_chunks(row))
             .for_each(|(out, pixels)| {
                 for (rgb, p) in out.chunks_exact_mut(3).zip(pixels) {
-                    rgb.copy_from_slice(&p.to_array().map(|c| table.encode(c)));
+                    rgb.copy_from_slice(&table.encode_rgb(*p));
                 }
             });
         RgbImage::from_raw(self.width, self.height, bytes).expect("3 bytes per pixel")

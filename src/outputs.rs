@@ -95,6 +95,7 @@ impl Outputs {
     pub fn rows(&mut self) -> impl IndexedParallelIterator<Item = RowOutputs<'_>> {
         let width = self.width.max(1) as usize;
         let height = self.height as usize;
+        let table = EncodeTable::get();
         let mut linear = self.linear.as_mut().map(|l| l.chunks_mut(width));
         let mut maps = self
             .maps
@@ -108,7 +109,7 @@ impl Outputs {
                 srgb,
                 linear: linear.as_mut().and_then(Iterator::next),
                 maps: maps.as_mut().and_then(Iterator::next),
-                table: EncodeTable::get(),
+                table,
             })
             .collect();
         rows.into_par_iter().with_max_len(1)
@@ -157,8 +158,7 @@ impl RowOutputs<'_> {
         if let Some(linear) = &mut self.linear {
             linear[i] = colour;
         }
-        let rgb = colour.to_array().map(|c| self.table.encode(c));
-        self.srgb[3 * i..3 * i + 3].copy_from_slice(&rgb);
+        self.srgb[3 * i..3 * i + 3].copy_from_slice(&self.table.encode_rgb(colour));
         finite
     }
 

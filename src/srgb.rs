@@ -109,6 +109,11 @@ impl EncodeTable {
         &TABLE
     }
 
+    /// A pixel's three bytes: [`EncodeTable::encode`] of each channel.
+    pub fn encode_rgb(&self, colour: crate::Vec3) -> [u8; 3] {
+        colour.to_array().map(|c| self.encode(c))
+    }
+
     /// The same byte as [`encode_channel`], for every `f32`.
     pub fn encode(&self, c: f32) -> u8 {
         // NaN, negatives and zero are black, and 1 and above white, as the

@@ -49,7 +49,7 @@ const MAX_PERIOD: usize = 32;
 /// point `s % spp`, so the lanes' points repeat every `lcm(spp, 8)`
 /// samples: `period` groups, `pixels` pixels further on. And each row has
 /// the same columns: a direction's part that depends on the column alone
-/// (`forward + right · x`, with its two divisions) is worked out once per
+/// (`forward + right · x`, with its division) is worked out once per
 /// image for every group of a row, and each row adds its own part to it.
 struct Repeating {
     period: usize,

@@ -320,7 +320,7 @@ impl Waves {
 
     /// Trace the wave of rays at `depth` (the camera's `primary` rays, or
     /// those in `rays`), and pack the rays they send on densely into
-    /// `next`.
+    /// `next`, those inside a sphere after the others.
     fn trace_wave(&mut self, setup: &Setup, depth: usize, primary: Option<&PrimaryRays>) {
         let can_send = depth < setup.max_depth as usize;
         let (rays, next, inside) = (&mut self.rays, &mut self.next, &mut self.inside);
@@ -533,7 +533,7 @@ impl Links {
 
 /// The mark of a provisional ray number: the ray's place among the next
 /// wave's rays inside spheres. Those go after the rays outside, whose count
-/// is known only once the whole wave is traced; then `settled` makes the
+/// is known only once the whole wave is traced; then [`settle`] makes the
 /// number final.
 pub const LATER: u32 = 1 << 31;
 
