@@ -5,51 +5,9 @@ use image::RgbImage;
 use rayon::prelude::*;
 
 use crate::Vec3;
+use crate::frame::{Keep, PixelMaps, Rendered, RowTally, Settings};
 use crate::linear_image::LinearImage;
-use crate::render::{Rendered, RowTally, Settings};
 use crate::srgb::EncodeTable;
-
-/// What a render keeps besides its 8-bit image, which it always makes.
-///
-/// Each is bookkeeping a program may not need: a program that only writes
-/// `render.png` keeps neither, and one that draws no diagrams
-/// (`--no-diagrams`) no maps. The image is the same either way.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Keep {
-    /// The image in linear light ([`Rendered::linear`]), for arithmetic on
-    /// it: differences, averages, tests. At 800 × 600 it is 7.7 MB, which
-    /// the kernel hands out and clears page by page as it is first written.
-    pub linear: bool,
-    /// The per-pixel depth and ray-count maps the heat maps draw.
-    pub maps: bool,
-}
-
-impl Keep {
-    /// The 8-bit image only: all that writing `render.png` needs.
-    pub const IMAGE: Keep = Keep {
-        linear: false,
-        maps: false,
-    };
-    /// The image in linear light too.
-    pub const LINEAR: Keep = Keep {
-        linear: true,
-        maps: false,
-    };
-    /// Everything: the linear image and the maps.
-    pub const ALL: Keep = Keep {
-        linear: true,
-        maps: true,
-    };
-}
-
-/// Per pixel, what its ray trees cost: the heat maps' numbers.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct PixelMaps {
-    /// Per pixel: the depth of the deepest ray of its trees.
-    pub deepest: Vec<u8>,
-    /// Per pixel: every ray traced for it, shadow rays included.
-    pub rays: Vec<u32>,
-}
 
 /// A render's outputs, made before the first ray and handed out to the
 /// workers a row at a time ([`Outputs::rows`]).
@@ -67,7 +25,7 @@ impl Outputs {
     ///
     /// The memory is not written here but by the workers, row by row, so
     /// the kernel hands its pages out on every core at once instead of on
-    /// this thread before the first ray (at 800 × 600 that took 5 ms). The
+    /// this thread before the first ray. The
     /// byte buffers are allocated zeroed, which the allocator gets from
     /// the kernel as they are without writing them; a vector of `Vec3` is
     /// filled in parallel for the same reason.
@@ -162,11 +120,6 @@ impl RowOutputs<'_> {
         finite
     }
 
-    /// Whether the row keeps the per-pixel maps ([`Keep::maps`]).
-    pub fn keeps_maps(&self) -> bool {
-        self.maps.is_some()
-    }
-
     /// Set pixel `i`'s depth and ray count, if the maps are kept.
     pub fn set_maps(&mut self, i: usize, deepest: u8, rays: u32) {
         if let Some((deepest_row, rays_row)) = &mut self.maps {
@@ -219,7 +172,7 @@ mod tests {
     fn only_what_is_asked_for_is_kept() {
         for keep in [Keep::IMAGE, Keep::LINEAR, Keep::ALL] {
             let mut outputs = Outputs::new(3, 2, keep);
-            assert!(outputs.rows().all(|row| row.keeps_maps() == keep.maps));
+            assert!(outputs.rows().all(|row| row.maps.is_some() == keep.maps));
             let rendered =
                 outputs.finish(&settings(), RowTally::default(), std::time::Instant::now());
             assert_eq!(rendered.linear.is_some(), keep.linear);

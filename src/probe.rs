@@ -1,7 +1,7 @@
 //! Following one pixel's rays: the ray tree behind a single colour.
 
 use crate::camera::Camera;
-use crate::render::Settings;
+use crate::frame::Settings;
 use crate::scene::Scene;
 use crate::trace::{Step, TracedRay, Tracer};
 

@@ -8,15 +8,12 @@
 //! ([`sample_rng`]), so a render is the same bytes on any number of threads.
 
 mod halton;
-pub mod lanes;
 mod rng;
 
 use std::fmt;
 
-use wide::f32x8;
-
 pub use halton::{ONE_BELOW, halton_2_3, radical_inverse};
-pub use rng::{PixelHash, Stream, sample_rng, splitmix64, unit_f32};
+pub use rng::{PixelHash, SPLITMIX_GAMMA, SPLITMIX_MIX, Stream, sample_rng, splitmix64, unit_f32};
 
 /// The most samples per pixel accepted (a 64 × 64 grid).
 pub const MAX_SPP: u32 = 4096;
@@ -208,6 +205,12 @@ impl Sampling {
         self.layout
     }
 
+    /// m, the side of the m × m grid of cells of `grid` and `jittered`
+    /// (1 for the other layouts).
+    pub fn side(&self) -> u32 {
+        self.side
+    }
+
     /// The pattern, or `None` for the lab's fixed points.
     pub fn pattern(&self) -> Option<Pattern> {
         match self.layout {
@@ -311,39 +314,6 @@ impl PixelSamples {
     // ANCHOR_END: offset
 }
 
-impl Sampling {
-    /// Whether [`Sampling::offsets_x8`] finds the points eight at a time.
-    pub fn offsets_in_lanes(&self) -> bool {
-        matches!(
-            self.layout,
-            Layout::Pattern(Pattern::Jittered | Pattern::Random)
-        )
-    }
-
-    /// [`PixelSamples::offset`] of eight samples at once, for the patterns
-    /// that draw their points (`jittered`, `random`): lane `l` is sample
-    /// `samples[l]`, whose [`lanes::sample_hashes`] are `hashes`. The same
-    /// numbers from the same generators, and the same arithmetic, lane by
-    /// lane. `None` for the other layouts, whose points cost little one at
-    /// a time.
-    pub fn offsets_x8(&self, hashes: lanes::U64x8, samples: [u32; 8]) -> Option<(f32x8, f32x8)> {
-        if !self.offsets_in_lanes() {
-            return None;
-        }
-        let mut rng = lanes::sample_rngs(hashes, Stream::Offset);
-        let every = lanes::lane_mask(0xff);
-        let (u, v) = (rng.uniform(every), rng.uniform(every));
-        if self.layout == Layout::Pattern(Pattern::Random) {
-            return Some((u, v));
-        }
-        let m = f32x8::splat(self.side as f32);
-        let column = f32x8::new(samples.map(|k| (k % self.side) as f32));
-        let row = f32x8::new(samples.map(|k| (k / self.side) as f32));
-        let below = f32x8::splat(ONE_BELOW);
-        Some((((column + u) / m).min(below), ((row + v) / m).min(below)))
-    }
-}
-
 /// `x` modulo 1, for `x` in [0, 2): the subtraction is exact (Sterbenz).
 fn wrap(x: f32) -> f32 {
     if x >= 1.0 { x - 1.0 } else { x }
@@ -383,42 +353,6 @@ mod tests {
 
     fn sampling(spp: u32, pattern: Pattern, seed: u64) -> Sampling {
         Sampling::new(spp, Some(pattern), seed).unwrap()
-    }
-
-    #[test]
-    fn eight_jittered_or_random_points_at_once_are_offset_s_points_to_the_bit() {
-        // Lanes across two pixels (sample numbers wrap at spp), with the
-        // last cells of a large grid, where the clamp below 1 matters.
-        for (spp, pattern, seed) in [
-            (16, Pattern::Jittered, 0),
-            (4096, Pattern::Jittered, 9),
-            (7, Pattern::Random, 3),
-            (16, Pattern::Random, 0),
-        ] {
-            let s = sampling(spp, pattern, seed);
-            assert!(s.offsets_in_lanes());
-            for first in [0, spp - 3, spp * 2 - 8] {
-                let samples: [u32; 8] = std::array::from_fn(|l| first + l as u32);
-                let pixel = |k: u32| (5 + k / spp, 2);
-                let hashes: [PixelHash; 8] = samples.map(|k| PixelHash::new(seed, pixel(k)));
-                let within = samples.map(|k| k % spp);
-                let (x, y) = s
-                    .offsets_x8(lanes::sample_hashes(hashes, within), within)
-                    .expect("drawn in lanes");
-                for (l, &k) in samples.iter().enumerate() {
-                    let expected = s.offset(pixel(k), k % spp);
-                    assert_eq!(
-                        (x.as_array_ref()[l], y.as_array_ref()[l]),
-                        expected,
-                        "{s}, sample {k}"
-                    );
-                }
-            }
-        }
-        // The fixed points and halton are found one at a time.
-        assert!(!Sampling::LAB_FIVE.offsets_in_lanes());
-        assert!(!sampling(16, Pattern::Halton, 1).offsets_in_lanes());
-        assert!(!sampling(16, Pattern::Grid, 1).offsets_in_lanes());
     }
 
     #[test]

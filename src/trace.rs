@@ -1,13 +1,8 @@
 //! The tracer: the ray-stack loop of LAB.md, and the seam where a chapter
 //! plugs in what happens when a ray hits something.
 
-use indicatif::ProgressBar;
-
 use crate::Vec3;
-use crate::camera::Camera;
-use crate::outputs::Keep;
 use crate::ray::{Ray, RayKind};
-use crate::render::{Rendered, Settings};
 use crate::scene::{Hit, Object, Scene};
 use crate::stack::{MAX_DEPTH_LIMIT, MAX_SECONDARIES, PendingRay, RayStack};
 
@@ -28,22 +23,6 @@ pub trait Step: Sync {
     /// whose step they are, gives its own.
     fn lab_five(&self) -> [(f32, f32); 5] {
         crate::sampling::LAB_FIVE
-    }
-
-    /// How a program renders its whole image with this step: by default
-    /// one ray at a time, with [`render`](crate::render::render). Chapter 7
-    /// overrides it to trace eight rays at a time, to the same bytes; the
-    /// probe and the depth sweep always use `shade`. The linear image and
-    /// the per-pixel maps are kept only as `keep` asks.
-    fn render_image(
-        &self,
-        scene: &Scene,
-        camera: &Camera,
-        settings: &Settings,
-        keep: Keep,
-        progress: &ProgressBar,
-    ) -> Rendered {
-        crate::render::render(scene, camera, self, settings, keep, progress)
     }
 }
 // ANCHOR_END: step
@@ -172,9 +151,15 @@ pub struct TracedRay {
 
 /// Counts of rays traced, by kind.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct RayCounts(pub [u64; RayKind::ALL.len()]);
+pub struct RayCounts([u64; RayKind::ALL.len()]);
 
 impl RayCounts {
+    /// Count `n` more rays of this kind.
+    #[inline]
+    pub fn add(&mut self, kind: RayKind, n: u64) {
+        self.0[kind.index()] += n;
+    }
+
     pub fn get(&self, kind: RayKind) -> u64 {
         self.0[kind.index()]
     }
@@ -270,10 +255,6 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
         self
     }
 
-    pub fn max_depth(&self) -> u32 {
-        self.max_depth
-    }
-
     /// The rays traced so far, by kind.
     pub fn counts(&self) -> RayCounts {
         self.counts
@@ -312,7 +293,7 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
             parent: None,
         });
         while let Some(pending) = self.stack.pop() {
-            self.counts.0[pending.kind.index()] += 1;
+            self.counts.add(pending.kind, 1);
             traced.rays += 1;
             traced.deepest = traced.deepest.max(pending.depth);
 
@@ -328,7 +309,8 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
             let added = pending.weight * self.surface.kept() * local;
             let me = self.add(&mut traced, &pending, Some(&hit), added);
 
-            self.counts.0[RayKind::Shadow.index()] += u64::from(self.surface.shadow_rays);
+            self.counts
+                .add(RayKind::Shadow, u64::from(self.surface.shadow_rays));
             traced.rays += self.surface.shadow_rays;
 
             if pending.depth < self.max_depth && self.surface.sent_len > 0 {

@@ -1,6 +1,6 @@
 //! How the chapters relate: each one changes only what its step adds.
 
-use raylab::indicatif::ProgressBar;
+use raylab::NoProgress;
 use raylab::{Camera, Keep, Rendered, Sampling, Scene, Settings, Step, Tracer, Vec3, render};
 
 fn settings(max_depth: u32, spp: u32) -> Settings {
@@ -20,7 +20,7 @@ fn render_with<S: Step + ?Sized>(step: &S, settings: &Settings) -> Rendered {
         step,
         settings,
         Keep::LINEAR,
-        &ProgressBar::hidden(),
+        &NoProgress,
     )
 }
 

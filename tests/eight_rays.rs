@@ -4,7 +4,7 @@
 use std::path::Path;
 
 use ch07_eight_rays::{EightRays, Like, render::render_waves};
-use raylab::indicatif::ProgressBar;
+use raylab::NoProgress;
 use raylab::sampling::Pattern;
 use raylab::{Camera, Keep, RayKind, Sampling, Scene, Settings, Step, render};
 
@@ -14,7 +14,8 @@ fn scalar_step(like: Like) -> &'static dyn Step {
         Like::RayCast => &ch01_ray_cast::RayCast,
         Like::Shadows => &ch02_shadows::Shadows,
         Like::Reflection => &ch03_reflection::Reflection,
-        Like::Refraction | Like::AntiAliasing => &ch04_refraction::Refraction,
+        Like::Refraction => &ch04_refraction::Refraction,
+        Like::AntiAliasing => &ch05_antialiasing::AntiAliasing,
     }
 }
 
@@ -25,14 +26,16 @@ fn settings(like: Like, (width, height): (u32, u32)) -> Settings {
         height,
         max_depth,
         epsilon: 1e-4,
-        sampling: Sampling::new(spp, None, 0).expect("a chapter's own spp"),
+        sampling: Sampling::new(spp, None, 0)
+            .expect("a chapter's own spp")
+            .with_lab_five(scalar_step(like).lab_five()),
     }
 }
 
 /// Render with chapter `like`'s scalar step and with chapter 7; both must
 /// give the same bytes, ray counts and per-pixel maps.
 fn assert_same(like: Like, scene: &Scene, camera: &Camera, settings: &Settings) {
-    let hidden = ProgressBar::hidden();
+    let hidden = NoProgress;
     let scalar = render(
         scene,
         camera,
@@ -166,7 +169,7 @@ fn with_no_offset_the_trees_that_reach_the_ray_budget_are_the_same() {
 fn keeping_only_the_8_bit_image_both_tracers_make_the_same_one_and_keep_nothing_else() {
     let (scene, camera) = (Scene::lab(), Camera::lab());
     let settings = settings(Like::AntiAliasing, (83, 61));
-    let hidden = ProgressBar::hidden();
+    let hidden = NoProgress;
     let step = EightRays {
         like: Like::AntiAliasing,
     };

@@ -2,7 +2,7 @@
 //! defaults otherwise). Regenerate them, on purpose only, with
 //! `RAYLAB_BLESS=1 cargo test -p raylab-tests --test golden` and look at the result.
 
-use raylab::indicatif::ProgressBar;
+use raylab::NoProgress;
 use raylab::{Camera, Keep, Scene, Step, render};
 use raylab_cli::{Chapter, Options};
 use raylab_tests::check_golden;
@@ -20,7 +20,7 @@ fn render_small<S: Step>(chapter: &Chapter<S>) -> raylab::Rendered {
         &chapter.step,
         &settings,
         Keep::LINEAR,
-        &ProgressBar::hidden(),
+        &NoProgress,
     );
     assert_eq!(rendered.non_finite, 0, "no pixel may be NaN or infinite");
     assert!(rendered.linear_image().is_finite());

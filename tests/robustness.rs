@@ -6,7 +6,8 @@
 use std::path::Path;
 
 use proptest::prelude::*;
-use raylab::indicatif::ProgressBar;
+use proptest::test_runner::FileFailurePersistence;
+use raylab::NoProgress;
 use raylab::{Keep, Sampling, Settings, render};
 use raylab_cli::scene_file::parse;
 
@@ -120,6 +121,15 @@ fn most_wild_scenes_are_accepted_so_the_render_check_runs() {
 }
 
 proptest! {
+    // A failing case is kept beside this test (tests run in their package's
+    // folder), in `tests/proptest-regressions/`, and tried first next time.
+    #![proptest_config(ProptestConfig {
+        failure_persistence: Some(Box::new(FileFailurePersistence::Direct(
+            "proptest-regressions/robustness.txt",
+        ))),
+        ..ProptestConfig::default()
+    })]
+
     #[test]
     fn any_text_is_parsed_or_refused_without_panicking(text in ".{0,400}") {
         let _ = parse(&text, Path::new("fuzz.toml"));
@@ -139,7 +149,7 @@ proptest! {
         if let Ok((scene, camera)) = parse(&text, Path::new("wild.toml")) {
             for (max_depth, epsilon) in [(10, 1e-4), (6, 0.0)] {
                 let settings = Settings { width: 8, height: 6, max_depth, epsilon, sampling: Sampling::LAB_FIVE };
-                let rendered = render(&scene, &camera, &ch04_refraction::Refraction, &settings, Keep::ALL, &ProgressBar::hidden());
+                let rendered = render(&scene, &camera, &ch04_refraction::Refraction, &settings, Keep::ALL, &NoProgress);
                 prop_assert_eq!(rendered.non_finite, 0, "a pixel was NaN or infinite: {}", text);
                 prop_assert!(rendered.linear_image().is_finite());
             }

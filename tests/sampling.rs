@@ -2,7 +2,7 @@
 //! threads or the order of the work, and the seed matters only where a
 //! pattern is random.
 
-use raylab::indicatif::ProgressBar;
+use raylab::NoProgress;
 use raylab::{Camera, Keep, Pattern, Sampling, Scene, Settings, Tracer, Vec3, render};
 
 const STEP: ch05_antialiasing::Refraction = ch05_antialiasing::Refraction;
@@ -29,7 +29,7 @@ fn render_on(threads: usize, settings: &Settings) -> image::RgbImage {
             &STEP,
             settings,
             Keep::IMAGE,
-            &ProgressBar::hidden(),
+            &NoProgress,
         )
     })
     .srgb
@@ -53,14 +53,7 @@ fn pixels_traced_one_by_one_backwards_match_the_parallel_render() {
     // pixels last row first, right to left, on one tracer changes nothing.
     let settings = settings(9, Pattern::Halton, 7);
     let (scene, camera) = (Scene::lab(), Camera::lab());
-    let rendered = render(
-        &scene,
-        &camera,
-        &STEP,
-        &settings,
-        Keep::LINEAR,
-        &ProgressBar::hidden(),
-    );
+    let rendered = render(&scene, &camera, &STEP, &settings, Keep::LINEAR, &NoProgress);
     let mut tracer = Tracer::new(&scene, &STEP, settings.max_depth, settings.epsilon);
     for j in (0..settings.height).rev() {
         for i in (0..settings.width).rev() {

@@ -36,9 +36,9 @@ pub fn splitmix64(x: u64) -> u64 {
 }
 
 /// SplitMix64's golden ratio increment and its two mixing multipliers
-/// (shared with the eight-lane rounds of [`super::lanes`]).
-pub(super) const SPLITMIX_GAMMA: u64 = 0x9e37_79b9_7f4a_7c15;
-pub(super) const SPLITMIX_MIX: [u64; 2] = [0xbf58_476d_1ce4_e5b9, 0x94d0_49bb_1331_11eb];
+/// (an eight-lane SplitMix64 must use the same).
+pub const SPLITMIX_GAMMA: u64 = 0x9e37_79b9_7f4a_7c15;
+pub const SPLITMIX_MIX: [u64; 2] = [0xbf58_476d_1ce4_e5b9, 0x94d0_49bb_1331_11eb];
 
 /// The generator for one sample's random choices of one kind.
 ///
@@ -66,9 +66,16 @@ pub fn sample_rng(seed: u64, pixel: (u32, u32), sample: u32, stream: Stream) -> 
 /// hashes them once per pixel rather than N times. The generators are the
 /// same either way.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct PixelHash(pub(super) u64);
+pub struct PixelHash(u64);
 
 impl PixelHash {
+    /// The hash itself, for a generator that finishes it another way
+    /// (eight samples at once).
+    #[inline]
+    pub fn bits(self) -> u64 {
+        self.0
+    }
+
     #[inline]
     pub fn new(seed: u64, (column, row): (u32, u32)) -> PixelHash {
         let pixel = (u64::from(column) << 32) | u64::from(row);

@@ -57,6 +57,7 @@ pub const CHAPTER: Chapter<RayCast> = Chapter {
     spp: 1,
     probe: ProbeTarget::SphereCentre("red"),
     step: RayCast,
+    render: raylab::render,
 };
 
 #[cfg(test)]

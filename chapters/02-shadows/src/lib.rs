@@ -55,6 +55,7 @@ pub const CHAPTER: Chapter<Shadows> = Chapter {
     spp: 1,
     probe: ProbeTarget::ShadowOf("blue"),
     step: Shadows,
+    render: raylab::render,
 };
 
 #[cfg(test)]

@@ -48,6 +48,7 @@ pub const CHAPTER: Chapter<Reflection> = Chapter {
     spp: 1,
     probe: ProbeTarget::SphereCentre("mirror"),
     step: Reflection,
+    render: raylab::render,
 };
 
 #[cfg(test)]

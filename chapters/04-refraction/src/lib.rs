@@ -74,6 +74,7 @@ pub const CHAPTER: Chapter<Refraction> = Chapter {
     spp: 1,
     probe: ProbeTarget::SphereCentre("glass"),
     step: Refraction,
+    render: raylab::render,
 };
 
 #[cfg(test)]

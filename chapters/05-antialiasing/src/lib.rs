@@ -57,6 +57,7 @@ pub const CHAPTER: Chapter<AntiAliasing> = Chapter {
     spp: 5,
     probe: ProbeTarget::SphereCentre("glass"),
     step: AntiAliasing,
+    render: raylab::render,
 };
 // ANCHOR_END: chapter
 

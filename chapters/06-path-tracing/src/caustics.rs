@@ -1,25 +1,11 @@
-//! Caustics, traced from the sun.
-//!
-//! With the sun a single direction, no path from the eye finds the light
-//! the glass ball focuses onto the ground: the ground's shadow ray hits the
-//! glass, and a random bounce never lands exactly on the sun. So these rays
-//! start at the other end. Light rays ("photons") leave the sun towards
-//! each sphere that mirrors or refracts, as a parallel beam just wide
-//! enough to cover it (pbrt's `DistantLight::SampleLe` does the same with a
-//! disc facing the scene), follow the mirror and glass bounces, and leave
-//! their power where they land on the ground. The irradiance at a ground
-//! point is then estimated from the photons near it: a density estimate.
+//! Caustics: the light the photons traced from the sun ([`crate::photons`])
+//! left on the ground, and the irradiance at a ground point estimated from
+//! the photons near it (a density estimate).
 
 use rayon::prelude::*;
 use wide::{CmpLe, CmpLt, f32x8};
 
-use raylab::optics::{reflect, refract};
-use raylab::scene::Object;
-use raylab::{Ray, Scene, Vec3};
-
-use crate::integrator::{Lobe, PathTracer};
-use crate::random::Random;
-use raylab::sampling::{Stream, sample_rng};
+use raylab::{Scene, Vec3};
 
 /// The density estimate's kernel radius on the ground, in scene units
 /// (the checker squares are 1 across).
@@ -37,14 +23,14 @@ const BINS_PER_CELL: f32 = 8.0;
 
 /// One photon on the ground.
 #[derive(Clone, Copy, Debug, PartialEq)]
-struct Photon {
+pub(crate) struct Photon {
     /// Position in the ground's own two axes.
-    u: f32,
-    v: f32,
+    pub u: f32,
+    pub v: f32,
     /// Its power (irradiance × area), the same in every colour channel.
-    power: f32,
+    pub power: f32,
     /// Mirror and glass bounces it took from the sun.
-    bounces: u32,
+    pub bounces: u32,
 }
 
 /// Photons as four columns of equal length, padded with powerless photons
@@ -81,52 +67,12 @@ pub struct CausticMap {
 }
 
 impl CausticMap {
-    /// Trace `per_sphere` photons towards every sphere that mirrors or
-    /// refracts. Paths are limited as eye paths are: at most `max_depth`
-    /// surface hits, of which the ground is one.
-    pub fn trace(tracer: &PathTracer, per_sphere: u32, seed: u64) -> CausticMap {
-        let scene = tracer.scene;
-        let mut photons = Vec::new();
-        let (mut sent, mut rays) = (0u64, 0u64);
-        for (index, sphere) in scene.spheres().iter().enumerate() {
-            let m = sphere.material;
-            if m.reflection() + m.transmission() <= 0.0 {
-                continue;
-            }
-            let (landed, traced) = (0..per_sphere)
-                .into_par_iter()
-                .fold(
-                    || (Vec::new(), 0u64),
-                    |(mut landed, mut traced), n| {
-                        // Photon generators are keyed by an impossible pixel
-                        // (no image is 2³² wide), so they never share
-                        // numbers with the eye's paths.
-                        let rng = sample_rng(seed, (u32::MAX, index as u32), n, Stream::Path);
-                        let mut random = Random(rng);
-                        let mut count = 0;
-                        if let Some(p) = photon(tracer, index, per_sphere, &mut random, &mut count)
-                        {
-                            landed.push(p);
-                        }
-                        traced += u64::from(count);
-                        (landed, traced)
-                    },
-                )
-                .reduce(
-                    || (Vec::new(), 0),
-                    |(mut a, x), (b, y)| {
-                        a.extend(b);
-                        (a, x + y)
-                    },
-                );
-            photons.extend(landed);
-            sent += u64::from(per_sphere);
-            rays += traced;
-        }
-        CausticMap::from_photons(scene, photons, sent, rays)
-    }
-
-    fn from_photons(scene: &Scene, photons: Vec<Photon>, sent: u64, rays: u64) -> CausticMap {
+    pub(crate) fn from_photons(
+        scene: &Scene,
+        photons: Vec<Photon>,
+        sent: u64,
+        rays: u64,
+    ) -> CausticMap {
         let photons = merged(photons);
         let plane = scene.ground.plane;
         let (axis_u, axis_v) = plane.normal.any_orthonormal_pair();
@@ -237,72 +183,6 @@ impl CausticMap {
     // ANCHOR_END: density
 }
 
-// ANCHOR: photon
-/// One photon towards sphere `index`: where it lands on the ground after
-/// at least one mirror or glass bounce, or `None` (it was absorbed by a
-/// diffuse share, hit a diffuse object first, or escaped).
-fn photon(
-    tracer: &PathTracer,
-    index: usize,
-    per_sphere: u32,
-    random: &mut Random,
-    rays: &mut u32,
-) -> Option<Photon> {
-    let scene = tracer.scene;
-    let sphere = &scene.spheres()[index].shape;
-    // A direction towards the sun, and a point on the disc, facing it,
-    // that just covers the sphere; the beam starts beyond every object.
-    let to_sun = tracer.sun.sample(random.uniform(), random.uniform());
-    let (t, b) = to_sun.any_orthonormal_pair();
-    let r = sphere.radius * random.uniform().sqrt();
-    let (sin, cos) = (2.0 * std::f32::consts::PI * random.uniform()).sin_cos();
-    let far = scene
-        .spheres()
-        .iter()
-        .map(|s| (s.shape.centre - sphere.centre).length() + s.shape.radius)
-        .fold(0.0, f32::max)
-        + 1.0;
-    let origin = sphere.centre + to_sun * far + r * (cos * t + sin * b);
-    // Each photon carries an equal part of the power crossing the disc:
-    // irradiance E_sun times the disc's area, shared by the photons.
-    let power =
-        tracer.sun.irradiance * std::f32::consts::PI * sphere.radius.powi(2) / per_sphere as f32;
-    let mut ray = Ray::new(origin, -to_sun);
-    // `bounces`: the mirror and glass bounces before this hit.
-    for bounces in 0..tracer.max_depth {
-        *rays += 1;
-        let hit = tracer.scene_lanes.nearest_hit(&ray)?;
-        // The beam is for this sphere: light that meets something else
-        // first is some other sphere's beam, or plain direct light.
-        if bounces == 0 && hit.object != Object::Sphere(index) {
-            return None;
-        }
-        let d = ray.direction;
-        let direction = match tracer.choose_lobe(d, &hit, random.uniform()) {
-            Lobe::Diffuse if hit.object == Object::Ground && bounces > 0 => {
-                return Some(Photon {
-                    u: (hit.point - scene.ground.plane.point).dot(ground_axes(scene).0),
-                    v: (hit.point - scene.ground.plane.point).dot(ground_axes(scene).1),
-                    power,
-                    bounces,
-                });
-            }
-            // Diffuse light is the eye paths' to find.
-            Lobe::Diffuse => return None,
-            Lobe::Mirror => reflect(d, hit.facing_normal),
-            Lobe::Refraction => {
-                let ior = hit.material.ior();
-                let eta = if hit.entering { 1.0 / ior } else { ior };
-                refract(d, hit.facing_normal, eta).unwrap_or_else(|| reflect(d, hit.facing_normal))
-            }
-        }
-        .normalize();
-        ray = Ray::new(hit.point + direction * tracer.epsilon, direction);
-    }
-    None
-}
-// ANCHOR_END: photon
-
 /// Merge the photons of each bin (see [`BINS_PER_CELL`]) into one, with
 /// their summed power, at their centre of power.
 ///
@@ -341,7 +221,7 @@ fn merged(photons: Vec<Photon>) -> Vec<Photon> {
         .collect()
 }
 
-fn ground_axes(scene: &Scene) -> (Vec3, Vec3) {
+pub(crate) fn ground_axes(scene: &Scene) -> (Vec3, Vec3) {
     scene.ground.plane.normal.any_orthonormal_pair()
 }
 

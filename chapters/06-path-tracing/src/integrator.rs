@@ -11,10 +11,9 @@ use std::f32::consts::FRAC_1_PI;
 
 use raylab::optics::{fresnel, reflect, refract};
 use raylab::scene::Object;
-use raylab::{Hit, Ray, Scene, Vec3};
+use raylab::{Hit, Ray, Scene, SceneQuery, Vec3};
 
 use crate::caustics::CausticMap;
-use crate::lanes::SceneLanes;
 use crate::random::Random;
 use crate::sun::Sunlight;
 
@@ -111,11 +110,12 @@ pub enum Lobe {
 }
 
 /// What it takes to trace paths through one scene.
-#[derive(Clone, Copy)]
-pub struct PathTracer<'s> {
+pub struct PathTracer<'s, Q: SceneQuery + ?Sized = Scene> {
     pub scene: &'s Scene,
-    /// The same scene's spheres in SIMD lanes, for the hit queries.
-    pub scene_lanes: &'s SceneLanes<'s>,
+    /// Who answers "what does this ray hit?": the scene itself, testing
+    /// every object in turn, or any faster [`SceneQuery`] with the same
+    /// answers.
+    pub objects: &'s Q,
     pub sun: Sunlight,
     pub materials: Materials,
     /// The most surface hits on a path, the first one included.
@@ -125,7 +125,17 @@ pub struct PathTracer<'s> {
     pub caustics: Option<&'s CausticMap>,
 }
 
-impl PathTracer<'_> {
+// Copied by hand rather than derived: a derive would ask `Q: Copy` too,
+// and the tracer only holds a reference to it.
+impl<Q: SceneQuery + ?Sized> Clone for PathTracer<'_, Q> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<Q: SceneQuery + ?Sized> Copy for PathTracer<'_, Q> {}
+
+impl<Q: SceneQuery + ?Sized> PathTracer<'_, Q> {
     // ANCHOR: lobe
     /// Choose the BSDF a path follows from `hit`, each with the
     /// probability of its share: the diffuse `1 − r − t`, the mirror `r`,
@@ -185,12 +195,12 @@ impl PathTracer<'_> {
             *rays += 1;
             // One hit more than the depth allows: only whether it escapes matters.
             let hit = if hits > self.max_depth {
-                if self.scene_lanes.any_hit(&ray) {
+                if self.objects.any_hit(&ray) {
                     break;
                 }
                 None
             } else {
-                self.scene_lanes.nearest_hit(&ray)
+                self.objects.nearest_hit(&ray)
             };
             let Some(hit) = hit else {
                 // Escaped: the sky's light, and the sun's disc if the path
@@ -224,7 +234,7 @@ impl PathTracer<'_> {
                     if cos > 0.0 {
                         *rays += 1;
                         let shadow = Ray::new(hit.point + to_sun * self.epsilon, to_sun);
-                        if !self.scene_lanes.any_hit(&shadow) {
+                        if !self.objects.any_hit(&shadow) {
                             let light = albedo * FRAC_1_PI * self.sun.irradiance * cos;
                             terms.add_sun(diffuse_bounces + 1, throughput * light);
                         }
@@ -320,10 +330,10 @@ mod tests {
     }
 
     /// The lab's tracer with lab materials and a point sun.
-    fn lab_tracer<'s>(scene: &'s Scene, lanes: &'s SceneLanes<'s>) -> PathTracer<'s> {
+    fn lab_tracer(scene: &Scene) -> PathTracer<'_> {
         PathTracer {
             scene,
-            scene_lanes: lanes,
+            objects: scene,
             sun: Sunlight::new(&scene.sun, None),
             materials: Materials::Lab,
             max_depth: 10,
@@ -351,8 +361,7 @@ mod tests {
         // random number must pick the same lobe as the reference does, or
         // an image correct on average has other noise than the reference.
         let scene = Scene::lab();
-        let lanes = SceneLanes::new(&scene);
-        let tracer = lab_tracer(&scene, &lanes);
+        let tracer = lab_tracer(&scene);
         let hit = glass_hit_head_on();
         let lobe = |u| tracer.choose_lobe(Vec3::NEG_Y, &hit, u);
         // Glass: [0, 0.1) mirror, [0.1, 0.8) refraction, [0.8, 1) diffuse.
@@ -364,8 +373,7 @@ mod tests {
     #[test]
     fn each_lobe_is_chosen_as_often_as_its_share() {
         let scene = Scene::lab();
-        let lanes = SceneLanes::new(&scene);
-        let tracer = lab_tracer(&scene, &lanes);
+        let tracer = lab_tracer(&scene);
         let hit = glass_hit_head_on();
         let mut counts = [0; 3];
         for i in 0..1000 {

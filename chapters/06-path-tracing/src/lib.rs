@@ -15,15 +15,15 @@
 //! ([`render`]) instead of a `raylab::Step`.
 
 pub mod caustics;
-pub mod eight;
 pub mod exr;
 pub mod integrator;
-pub mod lanes;
+pub mod photons;
+pub mod pixel;
 pub mod random;
 pub mod render;
 pub mod run;
 pub mod sun;
 
 pub use integrator::{Materials, PathTracer, Terms};
-pub use render::{PathRender, PathSettings, Tracer, render};
-pub use run::{Flags, PROGRAM, main, run};
+pub use render::{PathRender, PathSettings, render_paths, render_with};
+pub use run::{Flags, PROGRAM, PathProgram, main, run};

@@ -6,17 +6,18 @@ use std::time::{Duration, Instant};
 
 use rayon::prelude::*;
 
-use raylab::indicatif::ProgressBar;
+use raylab::frame::thousands;
 use raylab::linear_image::LinearImage;
-use raylab::render::thousands;
-use raylab::{Camera, Scene, Vec3};
+use raylab::render::Progress;
+use raylab::sampling::{PixelHash, Sampling, Stream};
+use raylab::{Camera, Scene, SceneQuery};
 
-use crate::caustics::{CausticMap, KERNEL_RADIUS};
-use crate::integrator::{Materials, PathTracer, Terms};
-use crate::lanes::SceneLanes;
+use crate::caustics::KERNEL_RADIUS;
+use crate::integrator::{Materials, PathTracer};
+use crate::photons::trace_caustics;
+use crate::pixel::{Images, PixelSums, RowImages, SampleSums};
 use crate::random::Random;
 use crate::sun::Sunlight;
-use raylab::sampling::{PixelHash, Sampling, Stream};
 
 /// What to render.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -33,22 +34,9 @@ pub struct PathSettings {
     pub caustics: bool,
     /// With `--caustics`: photons sent towards each mirror or glass sphere.
     pub photons_per_sphere: u32,
-    /// `--tracer`: one path at a time, or eight (the same bytes).
-    pub tracer: Tracer,
     /// Whether the five term images are made: not with `--no-diagrams`,
     /// which writes only the render and its variance.
     pub keep_terms: bool,
-}
-
-/// `--tracer`: how the paths are traced. Both give the same image to the
-/// bit; [`PathTracer::trace`] is the definition, and eight lanes are faster.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
-pub enum Tracer {
-    /// One path at a time (`PathTracer::trace`), the chapter's definition
-    Scalar,
-    /// Eight paths at a time in SIMD lanes, to the same bytes
-    #[default]
-    Eight,
 }
 
 /// A rendered image and everything measured along the way.
@@ -83,32 +71,10 @@ pub struct CausticStats {
     pub elapsed: Duration,
 }
 
-/// One pixel's sums over its samples.
-#[derive(Clone, Copy, Default)]
-pub(crate) struct PixelSums {
-    mean: Vec3,
-    variance: Vec3,
-    terms: Terms,
-    rays: u64,
-    non_finite: u64,
-}
-
-/// A pixel's running sums as its samples come in, in sample order (float
-/// sums depend on the order).
-#[derive(Clone, Copy, Default)]
-pub(crate) struct SampleSums {
-    sum: [f64; 3],
-    sum_sq: [f64; 3],
-    terms: Terms,
-    /// Every ray of the pixel's paths.
-    pub rays: u32,
-    non_finite: u64,
-}
-
 // ANCHOR: pixel
 /// Trace a pixel's paths and average them.
 fn render_pixel(
-    tracer: &PathTracer,
+    tracer: &PathTracer<'_, impl SceneQuery>,
     camera: &Camera,
     settings: &PathSettings,
     pixel: (u32, u32),
@@ -129,65 +95,51 @@ fn render_pixel(
     sums.finish(sampling.spp())
 }
 
-impl SampleSums {
-    /// One more sample's light; a NaN or infinite one is counted, not summed.
-    pub(crate) fn add(&mut self, terms: &Terms) {
-        let radiance = terms.total();
-        if !radiance.is_finite() {
-            self.non_finite += 1;
-            return;
-        }
-        self.terms += *terms;
-        for (c, x) in radiance.to_array().into_iter().enumerate() {
-            let x = f64::from(x);
-            self.sum[c] += x;
-            self.sum_sq[c] += x * x;
-        }
-    }
-
-    /// The mean of `n` samples, and the variance of that mean from the
-    /// same samples: `(Σx² − N·x̄²) / (N − 1) / N`, summed in f64 because a
-    /// sun disc seen in the mirror is 37,000 times brighter than the sky
-    /// and its squares would swamp an f32 sum.
-    pub(crate) fn finish(self, n: u32) -> PixelSums {
-        let n = f64::from(n);
-        let mean = self.sum.map(|s| s / n);
-        let variance = std::array::from_fn(|c| {
-            if n < 2.0 {
-                return 0.0;
-            }
-            ((self.sum_sq[c] - n * mean[c] * mean[c]) / (n - 1.0)).max(0.0) / n
-        });
-        let to_vec = |a: [f64; 3]| Vec3::new(a[0] as f32, a[1] as f32, a[2] as f32);
-        let terms = self.terms.as_array().map(|t| t / n as f32);
-        PixelSums {
-            mean: to_vec(mean),
-            variance: to_vec(variance),
-            terms: Terms {
-                seen: terms[0],
-                sun_direct: terms[1],
-                sky_direct: terms[2],
-                indirect: terms[3],
-                caustics: terms[4],
-            },
-            rays: u64::from(self.rays),
-            non_finite: self.non_finite,
-        }
-    }
-}
 // ANCHOR_END: pixel
 
-/// Render on every core, one image row per task, ticking `progress` per row.
-pub fn render(
+/// Render on every core, one path at a time: the chapter's definition.
+/// Each image row is one task, and `progress` is told of each row done.
+pub fn render_paths(
     scene: &Scene,
     camera: &Camera,
     settings: &PathSettings,
-    progress: &ProgressBar,
+    progress: &dyn Progress,
 ) -> PathRender {
-    let scene_lanes = SceneLanes::new(scene);
+    let width = settings.width as usize;
+    render_with(scene, scene, settings, |tracer, rows| {
+        // ANCHOR: rows
+        // Every row on every core, each written by its worker straight
+        // into its place in the output images.
+        rows.into_par_iter()
+            .enumerate()
+            .map(|(j, mut row)| {
+                for i in 0..width {
+                    let pixel = (i as u32, j as u32);
+                    row.set(i, render_pixel(tracer, camera, settings, pixel));
+                }
+                progress.row_done();
+                (row.rays, row.non_finite)
+            })
+            .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1))
+        // ANCHOR_END: rows
+    })
+}
+
+/// What every path render does around its rows: make the tracer, whose
+/// hit queries `objects` answers (the scene itself, or a faster
+/// [`SceneQuery`] that gives the same answers), trace the caustic map
+/// first if asked for, hand `rows` the output images row by row, and
+/// gather the result. `rows` returns the rays traced and the samples that
+/// came out NaN or infinite.
+pub fn render_with<Q: SceneQuery>(
+    scene: &Scene,
+    objects: &Q,
+    settings: &PathSettings,
+    rows: impl FnOnce(&PathTracer<'_, Q>, Vec<RowImages<'_>>) -> (u64, u64),
+) -> PathRender {
     let mut tracer = PathTracer {
         scene,
-        scene_lanes: &scene_lanes,
+        objects,
         sun: Sunlight::new(&scene.sun, settings.sun_size),
         materials: settings.materials,
         max_depth: settings.max_depth,
@@ -196,7 +148,7 @@ pub fn render(
     };
     let map = settings.caustics.then(|| {
         let start = Instant::now();
-        let map = CausticMap::trace(
+        let map = trace_caustics(
             &tracer,
             settings.photons_per_sphere,
             settings.sampling.seed(),
@@ -213,24 +165,7 @@ pub fn render(
     let eye_start = Instant::now();
     let (width, height) = (settings.width as usize, settings.height as usize);
     let mut images = Images::new(width * height, settings.keep_terms);
-    // ANCHOR: rows
-    // Every row on every core, each written by its worker straight into
-    // its place in the output images.
-    let rows = images.rows(width).into_par_iter().enumerate();
-    let (rays, non_finite) = match settings.tracer {
-        Tracer::Eight => crate::eight::render_rows(&tracer, camera, settings, progress, rows),
-        Tracer::Scalar => rows
-            .map(|(j, mut row)| {
-                for i in 0..width {
-                    let pixel = (i as u32, j as u32);
-                    row.set(i, render_pixel(&tracer, camera, settings, pixel));
-                }
-                progress.inc(1);
-                (row.rays, row.non_finite)
-            })
-            .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1)),
-    };
-    // ANCHOR_END: rows
+    let (rays, non_finite) = rows(&tracer, images.rows(width));
     let elapsed = eye_start.elapsed();
     let image = |pixels| LinearImage::from_pixels(settings.width, settings.height, pixels);
     PathRender {
@@ -243,77 +178,6 @@ pub fn render(
         elapsed,
         non_finite,
         caustics: map.map(|(_, stats)| stats),
-    }
-}
-
-/// The images a render fills in: each pixel's mean, the variance of that
-/// mean and, when kept, its five terms.
-struct Images {
-    mean: Vec<Vec3>,
-    variance: Vec<Vec3>,
-    terms: Option<[Vec<Vec3>; 5]>,
-}
-
-impl Images {
-    /// `pixels` black pixels in each image, cleared by this thread before
-    /// the render (clearing them on every core, with `par_extend`, measured
-    /// the same: 587 against 599 ms over 11 interleaved runs of the whole
-    /// program).
-    fn new(pixels: usize, keep_terms: bool) -> Images {
-        let black = || vec![Vec3::ZERO; pixels];
-        Images {
-            mean: black(),
-            variance: black(),
-            terms: keep_terms.then(|| std::array::from_fn(|_| black())),
-        }
-    }
-
-    /// Each row's share of every image, `width` pixels each.
-    fn rows(&mut self, width: usize) -> Vec<RowImages<'_>> {
-        let mut term_rows =
-            (self.terms.as_mut()).map(|terms| terms.each_mut().map(|term| term.chunks_mut(width)));
-        let mut next_term_rows = move || {
-            let rows = term_rows.as_mut()?;
-            Some(
-                rows.each_mut()
-                    .map(|r| r.next().expect("every image has the rows")),
-            )
-        };
-        (self.mean.chunks_mut(width))
-            .zip(self.variance.chunks_mut(width))
-            .map(|(mean, variance)| RowImages {
-                mean,
-                variance,
-                terms: next_term_rows(),
-                rays: 0,
-                non_finite: 0,
-            })
-            .collect()
-    }
-}
-
-/// One image row's pixels in each output image, filled in by one task,
-/// and the rays and non-finite samples of its pixels.
-pub(crate) struct RowImages<'a> {
-    mean: &'a mut [Vec3],
-    variance: &'a mut [Vec3],
-    terms: Option<[&'a mut [Vec3]; 5]>,
-    pub rays: u64,
-    pub non_finite: u64,
-}
-
-impl RowImages<'_> {
-    /// Pixel `i` of the row, from its sums.
-    pub(crate) fn set(&mut self, i: usize, pixel: PixelSums) {
-        self.mean[i] = pixel.mean;
-        self.variance[i] = pixel.variance;
-        if let Some(terms) = &mut self.terms {
-            for (image, term) in terms.iter_mut().zip(pixel.terms.as_array()) {
-                image[i] = term;
-            }
-        }
-        self.rays += pixel.rays;
-        self.non_finite += pixel.non_finite;
     }
 }
 
@@ -355,9 +219,6 @@ impl fmt::Display for PathSettings {
         }
         if self.caustics {
             write!(f, ", caustics")?;
-        }
-        if self.tracer == Tracer::Scalar {
-            write!(f, ", scalar tracer")?;
         }
         Ok(())
     }

@@ -1,29 +1,48 @@
-//! Chapter 6's program on the shared command line: the shared flags, this
-//! chapter's own (`--materials`, `--sun-size`, `--caustics`), and its files.
+//! A path tracer's program on the shared command line: the flags every
+//! program takes, the path tracer's own (`--materials`, `--sun-size`,
+//! `--caustics`), and its files. Chapter 6 runs it with its definition,
+//! one path at a time; a faster renderer of the same paths can run it too.
 
 use std::ffi::OsString;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Args, FromArgMatches};
+use raylab::render::Progress;
+use raylab::sampling::{Pattern, Sampling};
 use raylab::{Camera, Scene};
 use raylab_cli::output::save_png;
-use raylab_cli::{self as cli, CliError, Options, Program};
+use raylab_cli::{self as cli, CliError, CommonFlags, Program};
 use rayon::prelude::*;
 
 use crate::exr::{Packing, save_exr};
 use crate::integrator::{Materials, Terms};
-use crate::render::{PathRender, PathSettings, Tracer, render};
+use crate::render::{PathRender, PathSettings, render_paths};
 use crate::sun::MAX_SUN_SIZE;
-use raylab::sampling::{Pattern, Sampling};
 
-/// Chapter 6's name and defaults: 256 paths per pixel, ten hits per path.
-pub const PROGRAM: Program = Program {
-    binary: "ch06-path-tracing",
-    about: "Chapter 6, the rendering equation: the lab scene path traced, with sky light, \
-            bounced light and (with --caustics) the light the glass focuses.",
-    max_depth: 10,
-    spp: 256,
+/// How a path-tracing program renders: every pixel's paths, and what they
+/// add up to.
+pub type PathRenderer = fn(&Scene, &Camera, &PathSettings, &dyn Progress) -> PathRender;
+
+/// A path-tracing program: its name and defaults on the command line, and
+/// its renderer.
+#[derive(Clone, Copy, Debug)]
+pub struct PathProgram {
+    pub program: Program,
+    pub render: PathRenderer,
+}
+
+/// Chapter 6's program: 256 paths per pixel, ten hits per path, traced one
+/// path at a time by the chapter's definition.
+pub const PROGRAM: PathProgram = PathProgram {
+    program: Program {
+        binary: "ch06-path-tracing",
+        about: "Chapter 6, the rendering equation: the lab scene path traced, with sky light, \
+                bounced light and (with --caustics) the light the glass focuses.",
+        max_depth: 10,
+        spp: 256,
+    },
+    render: render_paths,
 };
 
 /// The flags only chapter 6 has.
@@ -40,10 +59,6 @@ pub struct Flags {
     /// Add the caustics: light traced from the sun through mirror and glass onto the ground
     #[arg(long)]
     pub caustics: bool,
-
-    /// How the paths are traced: one at a time or eight at a time, to the same bytes
-    #[arg(long, value_enum, default_value_t = Tracer::Eight)]
-    pub tracer: Tracer,
 }
 
 fn parse_sun_size(text: &str) -> Result<f32, String> {
@@ -56,45 +71,29 @@ fn parse_sun_size(text: &str) -> Result<f32, String> {
     }
 }
 
-/// The shared flags with chapter 6's defaults, and its own.
-pub fn command() -> clap::Command {
-    Flags::augment_args(Options::command(&PROGRAM))
+/// The flags every program takes, with a path tracer's defaults, and its own.
+pub fn command(program: &Program) -> clap::Command {
+    Flags::augment_args(CommonFlags::command(program))
         .mut_arg("spp", |a| a.help("Paths per pixel, 1 to 4096"))
         .mut_arg("pattern", |a| {
             a.help("Where a pixel's paths start: jittered (N = m²), random or halton [default: random]")
         })
 }
 
-/// Parse chapter 6's command line (`args` starts with the program's name).
+/// Parse a path tracer's command line (`args` starts with the program's name).
 pub fn parse(
+    program: &Program,
     args: impl IntoIterator<Item = impl Into<OsString> + Clone>,
-) -> Result<(Options, Flags), clap::Error> {
-    let matches = command().try_get_matches_from(args)?;
+) -> Result<(CommonFlags, Flags), clap::Error> {
+    let matches = command(program).try_get_matches_from(args)?;
     Ok((
-        Options::from_arg_matches(&matches)?,
+        CommonFlags::from_arg_matches(&matches)?,
         Flags::from_arg_matches(&matches)?,
     ))
 }
 
 /// The render settings the flags ask for, once checked together.
-pub fn settings(options: &Options, flags: &Flags) -> Result<PathSettings, CliError> {
-    let refuse = |flag: &str, what: &str| {
-        Err(CliError::Usage(format!(
-            "chapter 6 has no {flag}: {what} (see --help)"
-        )))
-    };
-    if options.probe.is_some() {
-        return refuse("--probe", "a path is random, not a ray tree");
-    }
-    if options.sweep.is_some() {
-        return refuse("--sweep", "run it with --max-depth 1, 2, 3, … instead");
-    }
-    if options.watch {
-        return refuse(
-            "--watch",
-            "a path-traced render takes seconds, not milliseconds",
-        );
-    }
+pub fn settings(options: &CommonFlags, flags: &Flags) -> Result<PathSettings, CliError> {
     cli::check_pixel_count(options.width, options.height)?;
     // A path tracer's pixel is the average over its whole area (LAB.md),
     // so its samples are spread at random, even for one path per pixel;
@@ -103,8 +102,8 @@ pub fn settings(options: &Options, flags: &Flags) -> Result<PathSettings, CliErr
     let pattern = options.pattern.unwrap_or(Pattern::Random);
     if pattern == Pattern::Grid {
         return Err(CliError::Usage(
-            "chapter 6 cannot use --pattern grid: a path tracer's samples must be spread at \
-             random over the pixel (use jittered, random or halton)"
+            "a path tracer cannot use --pattern grid: its samples must be spread at random \
+             over the pixel (use jittered, random or halton)"
                 .into(),
         ));
     }
@@ -119,7 +118,6 @@ pub fn settings(options: &Options, flags: &Flags) -> Result<PathSettings, CliErr
         sun_size: flags.sun_size,
         caustics: flags.caustics,
         photons_per_sphere: crate::caustics::PHOTONS_PER_SPHERE,
-        tracer: flags.tracer,
         keep_terms: !options.no_diagrams,
     })
 }
@@ -162,20 +160,18 @@ pub const TERM_FILES: [&str; 5] = [
 
 /// Render and write `render.png`, `render.exr`, `variance.exr` (with two or
 /// more paths per pixel) and, unless `--no-diagrams`, each term as EXR and PNG.
-pub fn run(options: &Options, flags: &Flags) -> Result<Report, CliError> {
+pub fn run(
+    program: &PathProgram,
+    options: &CommonFlags,
+    flags: &Flags,
+) -> Result<Report, CliError> {
     let settings = settings(options, flags)?;
-    let (scene, camera) = match &options.scene {
-        Some(path) => raylab_cli::scene_file::load(path)?,
-        None => (Scene::lab(), Camera::lab()),
-    };
-    let out_dir = options
-        .out
-        .clone()
-        .unwrap_or_else(|| PathBuf::from("out").join(PROGRAM.binary));
+    let (scene, camera) = options.load_scene()?;
+    let out_dir = options.out_dir(program.program.binary);
     cli::prepare_out_dir(&out_dir)?;
 
     let progress = cli::progress_bar(u64::from(settings.height), options.quiet);
-    let rendered = render(&scene, &camera, &settings, &progress);
+    let rendered = (program.render)(&scene, &camera, &settings, &|| progress.inc(1));
     progress.finish_and_clear();
 
     // The files in the order they are listed, render.png first, written
@@ -218,13 +214,13 @@ pub fn run(options: &Options, flags: &Flags) -> Result<Report, CliError> {
 }
 
 /// What a run prints: the summary line and where the files are.
-pub fn report_text(report: &Report) -> String {
+pub fn report_text(binary: &str, report: &Report) -> String {
     let names: Vec<String> = report
         .written
         .iter()
         .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
         .collect();
-    let mut text = format!("{}: {}\n", PROGRAM.binary, report.render);
+    let mut text = format!("{binary}: {}\n", report.render);
     if report.render.settings.sampling.spp() == 1 {
         text.push_str("  (one path per pixel: no variance.exr, it needs two or more)\n");
     }
@@ -236,24 +232,25 @@ pub fn report_text(report: &Report) -> String {
     text
 }
 
-/// Chapter 6's whole `main`, on the shared one ([`cli::main_of`]): parse,
-/// render, write, report; bad input gives one line on stderr and exit code 2.
-pub fn main() -> ExitCode {
-    cli::main_of(PROGRAM.binary, command(), std::env::args_os(), |matches| {
-        let usage = |e: clap::Error| Some(CliError::Usage(cli::usage_line(&e)));
-        let options = Options::from_arg_matches(matches).map_err(usage)?;
+/// A path tracer's whole `main`, on the shared one ([`cli::main_of`]):
+/// parse, render, write, report; bad input gives one line on stderr and
+/// exit code 2.
+pub fn main(program: &PathProgram) -> ExitCode {
+    let binary = program.program.binary;
+    let command = command(&program.program);
+    cli::main_of(binary, command, std::env::args_os(), |matches| {
+        let usage = |e: clap::Error| CliError::Usage(cli::usage_line(&e));
+        let options = CommonFlags::from_arg_matches(matches).map_err(usage)?;
         let flags = Flags::from_arg_matches(matches).map_err(usage)?;
-        let report = run(&options, &flags).map_err(Some)?;
+        let report = run(program, &options, &flags)?;
         if !options.quiet {
             use std::io::Write;
-            let text = report_text(&report);
+            let text = report_text(binary, &report);
             let _ = std::io::stdout().lock().write_all(text.as_bytes());
         }
         Ok(())
     })
 }
 
-#[allow(dead_code)]
-fn _terms_match_files() {
-    let _: [(); Terms::NAMES.len()] = [(); TERM_FILES.len()];
-}
+// Every term has its file.
+const _: () = assert!(Terms::NAMES.len() == TERM_FILES.len());

@@ -1,4 +1,5 @@
-//! Chapter 6's program: its files, and its refusals.
+//! Chapter 6's program: its files, and its refusals (a path tracer has
+//! no ray tree: `--probe` and `--sweep` are not its flags).
 
 use std::path::Path;
 use std::process::Command;
@@ -21,7 +22,7 @@ fn bad_sun_sizes_and_materials_give_one_line_exit_2_and_write_nothing() {
         &["--sun-size", "0"],
         &["--sun-size", "nan"],
         &["--materials", "nope"],
-        &["--tracer", "sixteen"],
+        &["--sweep", "3"],
         &["--pattern", "jittered", "--spp", "8"],
         &["--probe", "1,1"],
     ] {
@@ -34,12 +35,6 @@ fn bad_sun_sizes_and_materials_give_one_line_exit_2_and_write_nothing() {
         assert!(!out.exists(), "{args:?} wrote {}", out.display());
         if args == ["--materials", "nope"] {
             assert!(stderr.contains("possible values: lab, fresnel"), "{stderr}");
-        }
-        if args == ["--tracer", "sixteen"] {
-            assert!(
-                stderr.contains("possible values: scalar, eight"),
-                "{stderr}"
-            );
         }
     }
 }
@@ -84,37 +79,5 @@ fn a_run_writes_the_image_its_variance_and_its_terms_as_exr_and_png() {
         png.as_raw(),
         image.to_srgb8().as_raw(),
         "the PNG is the EXR, encoded"
-    );
-}
-
-#[test]
-fn both_tracers_write_the_same_files_and_help_names_them() {
-    let dir = tempfile::tempdir().unwrap();
-    let size = [
-        "--width",
-        "21",
-        "--height",
-        "9",
-        "--spp",
-        "3",
-        "--sun-size",
-        "5",
-    ];
-    let files = |tracer: &str| {
-        let out = dir.path().join(tracer);
-        let output = run(&[&size[..], &["--tracer", tracer]].concat(), &out);
-        assert!(
-            output.status.success(),
-            "{}",
-            String::from_utf8_lossy(&output.stderr)
-        );
-        ["render.png", "render.exr", "variance.exr"].map(|f| std::fs::read(out.join(f)).unwrap())
-    };
-    assert!(files("scalar") == files("eight"), "the files differ");
-    let help = run(&["--help"], &dir.path().join("help"));
-    let help = String::from_utf8_lossy(&help.stdout);
-    assert!(
-        help.contains("--tracer") && help.contains("[default: eight]"),
-        "{help}"
     );
 }

@@ -1,10 +1,9 @@
 //! Chapter 6 against what is known: closed forms, a furnace, itself.
 
-use ch06_path_tracing::lanes::SceneLanes;
 use ch06_path_tracing::random::Random;
 use ch06_path_tracing::sun::Sunlight;
-use ch06_path_tracing::{Materials, PathRender, PathSettings, PathTracer, Terms, Tracer, render};
-use raylab::indicatif::ProgressBar;
+use ch06_path_tracing::{Materials, PathRender, PathSettings, PathTracer, Terms, render_paths};
+use raylab::NoProgress;
 use raylab::light::{Sky, Sun};
 use raylab::plane::{Checker, Plane};
 use raylab::sampling::{Pattern, Sampling, Stream, sample_rng};
@@ -23,18 +22,12 @@ fn settings(width: u32, height: u32, spp: u32, seed: u64) -> PathSettings {
         sun_size: None,
         caustics: false,
         photons_per_sphere: 50_000,
-        tracer: Tracer::default(),
         keep_terms: true,
     }
 }
 
 fn lab(settings: &PathSettings) -> PathRender {
-    render(
-        &Scene::lab(),
-        &Camera::lab(),
-        settings,
-        &ProgressBar::hidden(),
-    )
+    render_paths(&Scene::lab(), &Camera::lab(), settings, &NoProgress)
 }
 
 /// The per-test threshold for `tests` z-tests that together fail with
@@ -86,10 +79,9 @@ fn an_open_unshadowed_ground_point_at_max_depth_1_converges_to_albedo_over_pi_ti
     let point = Vec3::new(-20.5, 0.0, 19.5);
     let albedo = scene.ground.checker.albedo_at(point);
     assert_eq!(albedo, Vec3::splat(0.75));
-    let lanes = SceneLanes::new(&scene);
     let tracer = PathTracer {
         scene: &scene,
-        scene_lanes: &lanes,
+        objects: &scene,
         sun: Sunlight::new(&scene.sun, None),
         materials: Materials::Lab,
         max_depth: 1,
@@ -181,7 +173,7 @@ fn a_white_world_under_a_constant_sky_is_as_bright_as_the_sky_everywhere() {
             materials,
             ..settings(40, 30, 16, 5)
         };
-        let rendered = render(&scene, &Camera::lab(), &settings, &ProgressBar::hidden());
+        let rendered = render_paths(&scene, &Camera::lab(), &settings, &NoProgress);
         for (p, (mean, var)) in rendered
             .image
             .pixels()
@@ -274,24 +266,18 @@ fn the_terms_sum_to_the_image() {
 
 #[test]
 fn a_render_without_its_terms_makes_the_same_image_and_variance() {
-    for tracer in [Tracer::Scalar, Tracer::Eight] {
-        let with = lab(&PathSettings {
-            tracer,
-            ..settings(41, 7, 4, 2)
-        });
-        let without = lab(&PathSettings {
-            tracer,
-            keep_terms: false,
-            ..settings(41, 7, 4, 2)
-        });
-        assert!(with.terms.is_some() && without.terms.is_none());
-        assert_eq!(with.image, without.image);
-        assert_eq!(with.variance, without.variance);
-        assert_eq!(
-            (with.rays, with.non_finite),
-            (without.rays, without.non_finite)
-        );
-    }
+    let with = lab(&settings(41, 7, 4, 2));
+    let without = lab(&PathSettings {
+        keep_terms: false,
+        ..settings(41, 7, 4, 2)
+    });
+    assert!(with.terms.is_some() && without.terms.is_none());
+    assert_eq!(with.image, without.image);
+    assert_eq!(with.variance, without.variance);
+    assert_eq!(
+        (with.rays, with.non_finite),
+        (without.rays, without.non_finite)
+    );
 }
 
 #[test]

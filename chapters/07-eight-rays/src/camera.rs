@@ -3,10 +3,10 @@
 use raylab::{Camera, RayKind, Settings};
 use wide::f32x8;
 
-use raylab::lanes::{CameraX8, Vec3x8};
+use raylab_lanes::{CameraX8, Vec3x8};
 
+use crate::link::END;
 use crate::soa::{Group, LANES};
-use crate::wave::END;
 
 // ANCHOR: primary
 /// Every sample's primary ray of row `j`, eight at a time, in the order

@@ -8,19 +8,21 @@
 //!
 //! - [`soa`]: eight rays side by side, one array per number;
 //! - [`camera`]: a row's primary rays, eight at a time;
-//! - [`intersect`]: eight rays against the ground and every sphere, masks
-//!   instead of branches;
-//! - [`shade`]: the lab's shading and optics, lane by lane;
+//! - [`shade`]: the lab's shading, lane by lane;
+//! - [`link`]: how each ray links to the next one of its sample;
 //! - [`wave`]: one pass per depth over a whole row, the rays sent on packed
 //!   densely into the next wave;
 //! - [`render`]: every row on every core, each sample's ray tree summed in
 //!   the scalar tracer's order.
 //!
-//! With `--like chNN-…` ([`like`]) it traces as any of chapters 1–5.
+//! The scene, the sky and the optics in lanes (eight rays against the
+//! ground and every sphere, masks instead of branches) are
+//! `raylab-lanes`', shared with chapter 8. With `--like chNN-…` ([`like`])
+//! it traces as any of chapters 1–5.
 
 pub mod camera;
-pub mod intersect;
 pub mod like;
+pub mod link;
 pub mod render;
 pub mod shade;
 pub mod soa;
@@ -30,17 +32,17 @@ use ch01_ray_cast::RayCast;
 use ch02_shadows::Shadows;
 use ch03_reflection::Reflection;
 use ch04_refraction::Refraction;
-use raylab::indicatif::ProgressBar;
-use raylab::{Camera, Hit, Keep, Ray, Rendered, Scene, Settings, Step, Surface, Vec3};
+use ch05_antialiasing::AntiAliasing;
+use raylab::{Hit, Ray, Step, Surface, Vec3};
 use raylab_cli::Chapter;
 
 pub use like::Like;
 
 /// Chapter 7's step: a Whitted chapter's shading, rendered in waves.
 ///
-/// `shade` is that chapter's own, one ray at a time: the probe, the depth
-/// sweep and the rare over-budget sample use it. `render_image`, the main
-/// render, traces eight rays at a time.
+/// `shade` and `lab_five` are that chapter's own, one ray at a time: the
+/// probe, the depth sweep and the rare over-budget sample use them. The
+/// program's render ([`render::render_waves`]) traces eight rays at a time.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct EightRays {
     pub like: Like,
@@ -56,15 +58,11 @@ impl Step for EightRays {
         }
     }
 
-    fn render_image(
-        &self,
-        scene: &Scene,
-        camera: &Camera,
-        settings: &Settings,
-        keep: Keep,
-        progress: &ProgressBar,
-    ) -> Rendered {
-        render::render_waves(scene, camera, self, settings, keep, progress)
+    fn lab_five(&self) -> [(f32, f32); 5] {
+        match self.like {
+            Like::AntiAliasing => AntiAliasing.lab_five(),
+            _ => raylab::sampling::LAB_FIVE,
+        }
     }
 }
 
@@ -84,5 +82,6 @@ pub fn chapter(like: Like) -> Chapter<EightRays> {
         spp,
         probe,
         step: EightRays { like },
+        render: render::render_waves,
     }
 }

@@ -4,18 +4,19 @@
 use std::cell::RefCell;
 use std::time::Instant;
 
-use raylab::indicatif::ProgressBar;
+use raylab::frame::RowTally;
 use raylab::outputs::{Outputs, RowOutputs};
-use raylab::render::RowTally;
+use raylab::render::Progress;
 use raylab::trace::RayCounts;
 use raylab::{Camera, Keep, RayKind, Rendered, Scene, Settings, Tracer, Vec3};
+use raylab_lanes::SceneX8;
 use rayon::prelude::*;
 
 use crate::EightRays;
 use crate::camera::{Primary, PrimaryRays};
-use crate::intersect::SceneX8;
+use crate::link::END;
 use crate::shade::Light;
-use crate::wave::{END, Ledger, Setup, Waves};
+use crate::wave::{Ledger, Setup, Waves};
 
 // ANCHOR: sum
 /// A sample's colour: the light of its rays added up in the order the
@@ -39,8 +40,8 @@ fn count_sample(waves: &Waves, sample: usize, counts: &mut RayCounts) {
     let mut ray = sample as u32;
     while ray != END {
         let (kind, cast_shadow) = waves.kinds[ray as usize];
-        counts.0[kind.index()] += 1;
-        counts.0[RayKind::Shadow.index()] += u64::from(cast_shadow);
+        counts.add(kind, 1);
+        counts.add(RayKind::Shadow, u64::from(cast_shadow));
         ray = waves.ledger.next(ray as usize);
     }
 }
@@ -100,13 +101,13 @@ pub fn render_waves(
     step: &EightRays,
     settings: &Settings,
     keep: Keep,
-    progress: &ProgressBar,
+    progress: &dyn Progress,
 ) -> Rendered {
     let start = Instant::now();
     let features = step.like.features();
     let setup = Setup {
         primary: Primary::new(camera, settings),
-        scene: SceneX8::new(scene, features),
+        scene: SceneX8::new(scene).with_optics(features.reflection, features.transmission),
         light: Light::new(scene),
         features,
         max_depth: settings.max_depth,
@@ -123,7 +124,7 @@ pub fn render_waves(
                 let mut worker = Worker { waves, scene, step };
                 render_row(&mut worker, &setup, camera, settings, row)
             });
-            progress.inc(1);
+            progress.row_done();
             tally
         })
         .reduce(RowTally::default, |a, b| a + b);

@@ -11,9 +11,9 @@ use raylab::RayKind;
 use raylab::Vec3;
 use wide::f32x8;
 
-/// The core's eight vectors side by side (`raylab::lanes`), which chapter
-/// 6's eight lanes use too.
-pub use raylab::lanes::{LANES, Vec3x8, negate};
+/// Eight vectors side by side, from `raylab-lanes`, which chapter 8's
+/// paths use too.
+pub use raylab_lanes::{LANES, Vec3x8, negate};
 
 // ANCHOR: rays
 /// A wave of rays. Each ray is one *record* of eight numbers, exactly one
@@ -35,7 +35,7 @@ pub struct Rays {
     pub kind: Vec<RayKind>,
     /// The ray that the scalar stack pops once this ray's whole subtree is
     /// done, as a number in the row's ledger ([`crate::wave::Ledger`]), or
-    /// [`crate::wave::END`] where the sample is then finished.
+    /// [`crate::link::END`] where the sample is then finished.
     pub after: Vec<u32>,
     len: usize,
 }
@@ -93,7 +93,7 @@ impl Rays {
         let (o, d) = (origin, direction);
         let sample = f32::from_bits(sample);
         self.records[i] = f32x8::from([o.x, o.y, o.z, d.x, d.y, d.z, weight, sample]);
-        (self.kind[i], self.after[i]) = (kind, crate::wave::END);
+        (self.kind[i], self.after[i]) = (kind, crate::link::END);
         self.len += 1;
     }
 
@@ -145,10 +145,10 @@ impl Rays {
     }
 
     /// Make the provisional links in `after` final (see
-    /// [`crate::wave::settle`]).
+    /// [`crate::link::settle`]).
     pub fn settle(&mut self, base: u32) {
         for after in &mut self.after[..self.len] {
-            crate::wave::settle(after, base);
+            crate::link::settle(after, base);
         }
     }
 

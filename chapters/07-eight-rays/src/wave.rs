@@ -14,23 +14,21 @@
 
 use raylab::trace::{RAY_BUDGET, RayCounts};
 use raylab::{RayKind, Vec3};
+use raylab_lanes::{SceneX8, reflect, refract};
 use wide::{CmpGt, f32x8};
 
 use crate::camera::{Primary, PrimaryRays};
-use crate::intersect::{SceneX8, senders};
 use crate::like::Features;
-use crate::shade::{Light, reflect, refract};
+use crate::link::{LATER, settle};
+use crate::shade::{Light, senders};
 use crate::soa::{Group, LANES, Rays, Vec3x8};
-
-/// The link of a sample's last ray: after it, the sample is finished.
-pub const END: u32 = u32::MAX;
 
 // ANCHOR: ledger
 /// One entry per ray traced in a row, numbered in the order the waves
 /// trace them (wave 1's rays first, so a primary ray's number is its
 /// sample's): the light the ray added to its sample, `w · (1 − r − t) ·
 /// local` or `w · sky`, and the number of the ray that the scalar ray stack
-/// pops next for the same sample ([`END`] after its last).
+/// pops next for the same sample ([`END`](crate::link::END) after its last).
 ///
 /// A ray that sends rays on links to its first child (the transmitted one,
 /// which the stack pops first); the child links to its sibling, and the
@@ -77,7 +75,7 @@ impl Ledger {
         Vec3::from_array(self.entries[ray].light)
     }
 
-    /// The ray its sample's stack pops after ray `ray`, or [`END`].
+    /// The ray its sample's stack pops after ray `ray`, or [`END`](crate::link::END).
     pub fn next(&self, ray: usize) -> u32 {
         self.entries[ray].next
     }
@@ -104,7 +102,7 @@ impl Ledger {
     /// Note that the links of the lanes of `unsettled` (lane `k` in bit
     /// `k`) of the group whose first entry is `first` are provisional.
     fn unsettled(&mut self, first: usize, unsettled: i32) {
-        let lanes = raylab::lanes::lanes_of(unsettled as u32);
+        let lanes = raylab_lanes::lanes_of(unsettled as u32);
         self.unsettled
             .extend(lanes.map(|lane| (first + lane) as u32));
     }
@@ -118,10 +116,10 @@ impl Ledger {
 }
 
 /// The fixed part of a render: the scene in lanes, the light, the limits.
-pub struct Setup {
+pub struct Setup<'s> {
     /// What every row's primary rays share.
     pub primary: Primary,
-    pub scene: SceneX8,
+    pub scene: SceneX8<'s>,
     pub light: Light,
     pub features: Features,
     pub max_depth: u32,
@@ -156,7 +154,7 @@ fn shade_group(setup: &Setup, rays: &Group, can_send: bool) -> Shaded {
     let sky = if hits.hit.all() {
         Vec3x8::ZERO
     } else {
-        setup.light.sky(d).scale(w)
+        setup.light.sky.radiance(d).scale(w)
     };
     let mut shaded = Shaded {
         added: sky,
@@ -208,7 +206,7 @@ fn shade_group(setup: &Setup, rays: &Group, can_send: bool) -> Shaded {
     // glass, and the optics is skipped. When 3 of 8 did, all 8 lanes
     // compute it and the masks keep the 3 answers.
     if can_send && (reflects | transmits).any() {
-        let mirrored = reflect(d, s.facing_normal);
+        let mirrored = reflect(d, s.facing_normal).normalize();
         let mirrored_from = s.point + mirrored.scale(eps);
         if reflects.any() {
             shaded.reflected = Some((mirrored_from, mirrored));
@@ -217,7 +215,7 @@ fn shade_group(setup: &Setup, rays: &Group, can_send: bool) -> Shaded {
         if transmits.any() {
             let eta = s.entering.blend(f32x8::ONE / s.ior, s.ior);
             let (bent, total) = refract(d, s.facing_normal, eta);
-            let direction = Vec3x8::select(total, mirrored, bent);
+            let direction = Vec3x8::select(total, mirrored, bent.normalize());
             let from = s.point + direction.scale(eps);
             shaded.transmitted = Some((from, direction, total));
             shaded.transmission = w * s.transmission;
@@ -304,7 +302,7 @@ impl Waves {
     /// camera as they are traced), then the rays they sent on, down to
     /// `max_depth` or until a wave is empty.
     pub fn trace(&mut self, setup: &Setup, primary: &PrimaryRays) {
-        self.counts.0[RayKind::Primary.index()] += primary.len() as u64;
+        self.counts.add(RayKind::Primary, primary.len() as u64);
         self.trace_wave(setup, 1, Some(primary));
         for depth in 2..=setup.max_depth as usize {
             // The rays just sent on become the wave to trace.
@@ -403,7 +401,7 @@ impl Waves {
                 self.ledger.push_group(shaded.added, eight.after, lanes);
             }
         }
-        self.counts.0[RayKind::Shadow.index()] += u64::from(shadows);
+        self.counts.add(RayKind::Shadow, u64::from(shadows));
         // The rays inside spheres go after the others: now their numbers
         // are known, and the links to them are made final.
         if !inside.is_empty() {
@@ -531,21 +529,6 @@ impl Links {
     }
 }
 
-/// The mark of a provisional ray number: the ray's place among the next
-/// wave's rays inside spheres. Those go after the rays outside, whose count
-/// is known only once the whole wave is traced; then [`settle`] makes the
-/// number final.
-pub const LATER: u32 = 1 << 31;
-
-/// Make a ray number final: a provisional one is counted on from `base`
-/// (the first number after the rays outside spheres), any other is left
-/// as it is (and not written: most are final already).
-pub fn settle(number: &mut u32, base: u32) {
-    if *number != END && *number & LATER != 0 {
-        *number = base + (*number & !LATER);
-    }
-}
-
 /// Append the group's transmitted rays, then its reflected ones, to the
 /// next wave, each packed densely in lane order: the rays that travel
 /// inside a sphere to `inside`, the others to `next`. Count them by kind:
@@ -562,7 +545,7 @@ fn pack_children(
     // is the mirror one, and counted as such.
     let total = shaded.transmitted.map_or(0, |t| t.2.move_mask());
     let mut count = |kind: RayKind, lanes: i32| {
-        counts.0[kind.index()] += u64::from(lanes.count_ones());
+        counts.add(kind, u64::from(lanes.count_ones()));
     };
     count(RayKind::Reflection, sends.reflects);
     count(RayKind::Refraction, sends.transmits & !total);
@@ -608,6 +591,7 @@ fn pack_children(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::link::END;
 
     #[test]
     fn a_ray_that_sends_both_links_to_its_transmitted_child_then_its_reflected_one() {

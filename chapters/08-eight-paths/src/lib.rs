@@ -1,0 +1,53 @@
+//! Chapter 8: eight paths at a time.
+//!
+//! Chapter 6's path tracer, to the same bytes, eight paths at a time.
+//!
+//! `PathTracer::trace` follows one path; here eight paths are in flight,
+//! one per lane of an `f32x8`, and every bounce is made for all eight at
+//! once: the camera rays, the hits against the ground and the spheres, the
+//! hit records, the sky, the sun's shadow rays, the new directions, the
+//! throughputs and the terms. Only what is rare, or the learner's, is done
+//! lane by lane: the choice of lobe where a material has one (the
+//! learner's `choose_lobe`), the disc sun's sample (`--sun-size`) and the
+//! caustic lookup (`--caustics`).
+//!
+//! The bytes are the scalar tracer's because each lane does the scalar
+//! code's operations in its order (the workspace builds without FMA), and
+//! draws from its sample's own generator exactly where the scalar code
+//! draws. When a path ends, its lane takes the row's next sample at once
+//! (path regeneration), and `window` puts the finished samples back in
+//! sample order before they are summed.
+//!
+//! - [`paths`]: eight paths in flight, and one bounce of all of them;
+//! - [`starts`]: the row's next samples, made ready eight at a time;
+//! - [`terms`]: the five terms of eight paths;
+//! - [`window`]: finished samples put back in order;
+//! - [`render`]: every row on every core, in chapter 6's frame.
+//!
+//! The scene, the camera, the sky and the optics in lanes are
+//! `raylab-lanes'`, shared with chapter 7. The program is chapter 6's, with
+//! this renderer: the same flags, the same files.
+
+pub mod paths;
+pub mod render;
+pub mod starts;
+pub mod terms;
+pub mod window;
+
+use ch06_path_tracing::PathProgram;
+use raylab_cli::Program;
+
+pub use render::render_eight;
+
+/// Chapter 8's program: chapter 6's, with its defaults, rendered eight
+/// paths at a time.
+pub const PROGRAM: PathProgram = PathProgram {
+    program: Program {
+        binary: "ch08-eight-paths",
+        about: "Chapter 8, eight paths at a time: chapter 6's path-traced image, to the byte, \
+                traced in 8-wide SIMD lanes.",
+        max_depth: 10,
+        spp: 256,
+    },
+    render: render_eight,
+};

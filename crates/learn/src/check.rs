@@ -1,0 +1,441 @@
+//! `learn check N`: does the learner's step compile, pass the chapter's
+//! tests, and render the reference image?
+
+use std::io::Write;
+use std::path::Path;
+use std::time::Duration;
+
+use image::RgbImage;
+use raylab::{Camera, Keep, NoProgress, Scene, Step, render};
+use raylab_cli::{Chapter, Options};
+
+use crate::compare::{Comparison, GAIN, compare, signed_difference};
+use crate::exercise::Exercise;
+use crate::lab::Lab;
+use crate::run::{
+    Built, TestResult, built_from_messages, cargo, panic_message, parse_test_output,
+    run_with_limit, shown,
+};
+
+/// The check's image size: small enough to render in a blink, large
+/// enough that every object, shadow and reflection covers many pixels.
+pub const WIDTH: u32 = 160;
+pub const HEIGHT: u32 = 120;
+
+/// How long the step's tests may run before the check stops them: far
+/// more than they need (milliseconds), so only a step that never ends
+/// reaches it.
+pub const TEST_TIME_LIMIT: Duration = Duration::from_secs(30);
+/// The same for the small render.
+pub const RENDER_TIME_LIMIT: Duration = Duration::from_secs(30);
+/// The build's limit: the first build compiles the core (a few minutes on
+/// a slow machine); after that a build takes a second or two.
+pub const BUILD_TIME_LIMIT: Duration = Duration::from_secs(60 * 60);
+
+/// Where the check stopped.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Verdict {
+    /// It compiles, its tests pass and its render matches: done.
+    Passed,
+    NoExercise,
+    DoesNotCompile,
+    TestsFail {
+        failed: usize,
+        of: usize,
+    },
+    TestsTimedOut,
+    RenderPanicked(String),
+    RenderTimedOut,
+    NonFinite(usize),
+    Differs(Comparison),
+    /// Something outside the learner's code went wrong (cargo missing …).
+    Broken(String),
+}
+
+impl Verdict {
+    pub fn passed(&self) -> bool {
+        *self == Verdict::Passed
+    }
+}
+
+/// How long the tests and the render may run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Limits {
+    pub tests: Duration,
+    pub render: Duration,
+}
+
+impl Limits {
+    pub const DEFAULT: Limits = Limits {
+        tests: TEST_TIME_LIMIT,
+        render: RENDER_TIME_LIMIT,
+    };
+}
+
+/// Check one exercise, writing what it finds to `out` as it goes.
+pub fn check(lab: &Lab, exercise: &Exercise, out: &mut dyn Write) -> Verdict {
+    check_with(lab, exercise, Limits::DEFAULT, out)
+}
+
+/// [`check`] with other time limits (the author checks use short ones).
+pub fn check_with(lab: &Lab, exercise: &Exercise, limits: Limits, out: &mut dyn Write) -> Verdict {
+    let verdict = check_steps(lab, exercise, limits, out);
+    if let Verdict::Broken(why) = &verdict {
+        let _ = writeln!(out, "learn: error: {why}");
+    }
+    verdict
+}
+
+fn check_steps(lab: &Lab, exercise: &Exercise, limits: Limits, out: &mut dyn Write) -> Verdict {
+    let folder = lab.folder(exercise);
+    let here = std::env::current_dir().unwrap_or_default();
+    let name = shown(&folder, &here);
+    if !folder.join("Cargo.toml").is_file() || !folder.join("src/lib.rs").is_file() {
+        let _ = writeln!(
+            out,
+            "learn: error: no exercise in {name}: make it with `cargo run -p learn -- start {}`",
+            exercise.number
+        );
+        return Verdict::NoExercise;
+    }
+    let _ = writeln!(out, "{exercise}, {name}/{}:", exercise.step);
+
+    let built = match build(lab, exercise, out) {
+        Ok(built) => built,
+        Err(verdict) => return verdict,
+    };
+    let (Some(program), Some(tests)) = (built.program, built.tests) else {
+        let _ = writeln!(
+            out,
+            "  ✗ the build made no program or no tests: is src/main.rs still there?"
+        );
+        return Verdict::DoesNotCompile;
+    };
+    let _ = writeln!(out, "  ✓ it compiles");
+
+    if let Err(verdict) = run_tests(&tests, &folder, limits.tests, out) {
+        return verdict;
+    }
+
+    let verdict = render_and_compare(lab, exercise, &program, &here, limits.render, out);
+    if verdict.passed() {
+        let _ = writeln!(
+            out,
+            "  ✓ its render ({WIDTH}×{HEIGHT}) matches the reference within LAB.md's tolerance\n\
+             Done: chapter {} passes. The reference solution is {} (and the book's {}).",
+            exercise.number,
+            shown(&lab.reference_source(exercise), &here),
+            shown(&lab.root.join(exercise.page), &here),
+        );
+        if let Err(error) = lab.record_pass(exercise.number) {
+            let _ = writeln!(out, "learn: could not record the pass: {error}");
+        }
+    }
+    verdict
+}
+
+/// Build the exercise's program and test harness in the shared target.
+fn build(lab: &Lab, exercise: &Exercise, out: &mut dyn Write) -> Result<Built, Verdict> {
+    let folder = lab.folder(exercise);
+    // The first build of an exercise compiles the core for it (the
+    // libraries under it come from the workspace's own build).
+    let program = format!("my-{}{}", exercise.package, std::env::consts::EXE_SUFFIX);
+    if !lab.target.join("debug").join(program).exists() {
+        let _ = writeln!(
+            out,
+            "  building your exercise for the first time (a minute or two; later checks take seconds) …"
+        );
+        let _ = out.flush();
+    }
+    let mut command = cargo();
+    command
+        .arg("build")
+        .arg("--quiet")
+        .arg("--all-targets")
+        .arg("--message-format=json-render-diagnostics")
+        .arg("--manifest-path")
+        .arg(folder.join("Cargo.toml"))
+        .arg("--target-dir")
+        .arg(&lab.target)
+        .env("CARGO_TERM_COLOR", "never");
+    let output = run_with_limit(command, BUILD_TIME_LIMIT)
+        .map_err(|e| Verdict::Broken(format!("cannot run cargo: {e}")))?;
+    if output.timed_out() {
+        let _ = writeln!(
+            out,
+            "  ✗ the build took more than {} minutes and was stopped",
+            BUILD_TIME_LIMIT.as_secs() / 60
+        );
+        return Err(Verdict::DoesNotCompile);
+    }
+    if !output.success() {
+        let _ = write!(out, "{}", output.stderr);
+        let _ = writeln!(
+            out,
+            "  ✗ it does not compile: the compiler's messages are above"
+        );
+        return Err(Verdict::DoesNotCompile);
+    }
+    Ok(built_from_messages(&output.stdout))
+}
+
+/// Run the step's tests (the chapter's own), and list them as sentences.
+fn run_tests(
+    harness: &Path,
+    folder: &Path,
+    limit: Duration,
+    out: &mut dyn Write,
+) -> Result<(), Verdict> {
+    let mut command = std::process::Command::new(harness);
+    command
+        .current_dir(folder)
+        .arg("--color=never")
+        .env("RUST_BACKTRACE", "0");
+    let output = run_with_limit(command, limit)
+        .map_err(|e| Verdict::Broken(format!("cannot run the tests: {e}")))?;
+    if output.timed_out() {
+        let _ = writeln!(
+            out,
+            "  ✗ the step's tests did not finish in {} s and were stopped: does a loop never end?",
+            limit.as_secs_f64()
+        );
+        return Err(Verdict::TestsTimedOut);
+    }
+    let results = parse_test_output(&output.stdout);
+    let failed: Vec<&TestResult> = results.iter().filter(|r| !r.passed).collect();
+    if results.is_empty() || (!output.success() && failed.is_empty()) {
+        let why = panic_message(&output.stderr).unwrap_or_else(|| "no test ran".into());
+        let _ = writeln!(out, "  ✗ the step's tests could not run: {why}");
+        return Err(Verdict::TestsFail { failed: 0, of: 0 });
+    }
+    if failed.is_empty() {
+        let _ = writeln!(out, "  ✓ the step's {} tests pass:", results.len());
+    } else {
+        let _ = writeln!(
+            out,
+            "  ✗ {} of the step's {} tests fail:",
+            failed.len(),
+            results.len()
+        );
+    }
+    for result in &results {
+        let mark = if result.passed { "✓" } else { "✗" };
+        let _ = writeln!(out, "      {mark} {}", result.sentence);
+        if let Some(message) = &result.message {
+            let _ = writeln!(out, "          {message}");
+        }
+    }
+    if failed.is_empty() {
+        Ok(())
+    } else {
+        Err(Verdict::TestsFail {
+            failed: failed.len(),
+            of: results.len(),
+        })
+    }
+}
+
+/// The size flags both renders use.
+fn size_flags() -> [String; 2] {
+    [format!("--width={WIDTH}"), format!("--height={HEIGHT}")]
+}
+
+/// Render the learner's program small and compare it with the reference.
+fn render_and_compare(
+    lab: &Lab,
+    exercise: &Exercise,
+    program: &Path,
+    here: &Path,
+    limit: Duration,
+    out: &mut dyn Write,
+) -> Verdict {
+    let dir = lab.folder(exercise).join("check");
+    let scratch = dir.join("render");
+    let mut command = std::process::Command::new(program);
+    command
+        .args(size_flags())
+        .args(exercise.flags)
+        .arg("--no-diagrams")
+        .arg(format!("--out={}", scratch.display()))
+        .env("RUST_BACKTRACE", "0");
+    let output = match run_with_limit(command, limit) {
+        Ok(output) => output,
+        Err(e) => return Verdict::Broken(format!("cannot run {}: {e}", program.display())),
+    };
+    if output.timed_out() {
+        let _ = writeln!(
+            out,
+            "  ✗ its render ({WIDTH}×{HEIGHT}) did not finish in {} s and was stopped: does a loop never end?",
+            limit.as_secs_f64()
+        );
+        return Verdict::RenderTimedOut;
+    }
+    if !output.success() {
+        let why = panic_message(&output.stderr)
+            .unwrap_or_else(|| output.stderr.lines().last().unwrap_or("").to_owned());
+        let _ = writeln!(out, "  ✗ its render stopped: {why}");
+        return Verdict::RenderPanicked(why);
+    }
+    if let Some(n) = non_finite(&output.stdout) {
+        let _ = writeln!(
+            out,
+            "  ✗ its render made {n} NaN or infinite pixels (shown black): a division by zero, \
+             or the square root of a negative number?"
+        );
+        return Verdict::NonFinite(n);
+    }
+    let learner = match image::open(scratch.join("render.png")) {
+        Ok(image) => image.to_rgb8(),
+        Err(e) => return Verdict::Broken(format!("cannot read the render: {e}")),
+    };
+    let reference = reference_image(exercise.number);
+    let comparison = compare(&learner, &reference);
+    if comparison.meets_lab_tolerance() {
+        return Verdict::Passed;
+    }
+    report_difference(
+        exercise,
+        &comparison,
+        (&learner, &reference),
+        program,
+        &dir,
+        here,
+        out,
+    );
+    Verdict::Differs(comparison)
+}
+
+/// The mismatch, as `idiff` would put it, with the three images and the
+/// probe commands that show the worst pixel's ray trees.
+fn report_difference(
+    exercise: &Exercise,
+    comparison: &Comparison,
+    (learner, reference): (&RgbImage, &RgbImage),
+    program: &Path,
+    dir: &Path,
+    here: &Path,
+    out: &mut dyn Write,
+) {
+    let _ = writeln!(
+        out,
+        "  ✗ its render ({WIDTH}×{HEIGHT}) differs from the reference: {:.1} % of pixels within 3 \
+         of 255 (needs 99.5 %), mean difference {:.2} (needs under 0.5)",
+        comparison.within_3 * 100.0,
+        comparison.mean
+    );
+    if let Some(w) = comparison.worst {
+        let _ = writeln!(
+            out,
+            "      worst pixel ({}, {}): yours ({}, {}, {}), the reference ({}, {}, {})",
+            w.x,
+            w.y,
+            w.ours[0],
+            w.ours[1],
+            w.ours[2],
+            w.reference[0],
+            w.reference[1],
+            w.reference[2]
+        );
+    }
+    let images = [
+        ("learner.png", learner.clone()),
+        ("reference.png", reference.clone()),
+        ("difference.png", signed_difference(learner, reference)),
+    ];
+    let mut saved = true;
+    for (name, image) in &images {
+        if let Err(e) = raylab_cli::output::save_png(image, &dir.join(name)) {
+            let _ = writeln!(out, "      could not write {name}: {e}");
+            saved = false;
+        }
+    }
+    if saved {
+        let _ = writeln!(
+            out,
+            "      look at {}/learner.png, reference.png and difference.png (red: yours brighter, \
+             blue: darker, magnified ×{GAIN})",
+            shown(dir, here)
+        );
+    }
+    if let Some(w) = comparison.worst {
+        let [width, height] = size_flags();
+        let _ = writeln!(
+            out,
+            "      that pixel's ray tree, yours:        {} {width} {height} --probe={},{} --out={}\n      \
+             and the reference's: cargo run -p {} -- {width} {height} --probe={},{} --out={}",
+            shown(program, here),
+            w.x,
+            w.y,
+            shown(&dir.join("probe"), here),
+            exercise.package,
+            w.x,
+            w.y,
+            shown(&dir.join("probe-reference"), here),
+        );
+    }
+}
+
+/// The count in the summary's "N pixels were NaN or infinite" warning.
+fn non_finite(summary: &str) -> Option<usize> {
+    let before = summary.split(" pixels were NaN or infinite").next()?;
+    if before.len() == summary.len() {
+        return None;
+    }
+    before.rsplit(' ').next()?.parse().ok()
+}
+
+/// The reference chapter's render at the check's size.
+pub fn reference_image(number: u8) -> RgbImage {
+    match number {
+        1 => small_render(&ch01_ray_cast::CHAPTER),
+        2 => small_render(&ch02_shadows::CHAPTER),
+        3 => small_render(&ch03_reflection::CHAPTER),
+        4 => small_render(&ch04_refraction::CHAPTER),
+        5 => small_render(&ch05_antialiasing::CHAPTER),
+        _ => small_path_traced(),
+    }
+}
+
+/// Chapter 6's reference at the check's size and flags, traced eight
+/// paths at a time by chapter 8 (chapter 6's bytes, sooner).
+fn small_path_traced() -> RgbImage {
+    use ch06_path_tracing::run;
+    let program = &ch06_path_tracing::PROGRAM.program;
+    let mut args = vec![program.binary.to_owned()];
+    args.extend(size_flags());
+    let flags = crate::exercise::exercise(6).map_or(&[][..], |e| e.flags);
+    args.extend(flags.iter().map(|f| (*f).to_owned()));
+    let (options, chapter_flags) = run::parse(program, args).expect("the check's flags parse");
+    let settings = run::settings(&options, &chapter_flags).expect("the check's size is allowed");
+    let rendered =
+        ch08_eight_paths::render_eight(&Scene::lab(), &Camera::lab(), &settings, &NoProgress);
+    rendered.image.to_srgb8()
+}
+
+fn small_render<S: Step>(chapter: &Chapter<S>) -> RgbImage {
+    let mut args = vec![chapter.binary.to_owned()];
+    args.extend(size_flags());
+    let options = Options::parse_for(chapter, args).expect("the check's flags parse");
+    let settings = options.settings().expect("the check's size is allowed");
+    let rendered = render(
+        &Scene::lab(),
+        &Camera::lab(),
+        &chapter.step,
+        &settings,
+        Keep::IMAGE,
+        &NoProgress,
+    );
+    rendered.srgb
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_count_of_nan_pixels_is_read_from_the_summary() {
+        let line = "ch02-shadows: 160×120 …; WARNING: 37 pixels were NaN or infinite\n";
+        assert_eq!(non_finite(line), Some(37));
+        assert_eq!(non_finite("ch02-shadows: 160×120, 1 spp\n"), None);
+    }
+}

@@ -1,0 +1,307 @@
+//! The exercises: each chapter's source with its new step blanked.
+//!
+//! A chapter marks what the learner writes with a pair of comments inside
+//! the function's body, next to the book's own anchors:
+//!
+//! ```text
+//! pub fn sun_factor(hit: &Hit, surface: &mut Surface) -> f32 {
+//!     // ANCHOR: todo_sun_factor "Cast a feeler ray ..."
+//!     ... the body ...
+//!     // ANCHOR_END: todo_sun_factor
+//! }
+//! ```
+//!
+//! The exercise keeps everything else (signature, doc comment, tests) and
+//! replaces the marked lines with `todo!("Cast a feeler ray ...")`. The
+//! markers are mdBook anchors, so the book's listings, which include the
+//! function around them, leave them out. The exercise is made from the
+//! chapter's source every time it is needed, so it cannot drift from it.
+
+use std::fmt;
+
+/// One chapter that can be done as an exercise.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Exercise {
+    pub number: u8,
+    /// The chapter's folder, from the workspace's root.
+    pub dir: &'static str,
+    /// The chapter's package (and program) name.
+    pub package: &'static str,
+    /// The book's page for it, from the workspace's root.
+    pub page: &'static str,
+    /// The file of the chapter's crate that holds the step, from its folder.
+    pub step: &'static str,
+    /// Flags the check renders with besides its size (chapter 6: fewer
+    /// paths, so that the learner's debug build renders in seconds).
+    pub flags: &'static [&'static str],
+    /// What to do, in a few lines, for `learn hint`.
+    pub hint: &'static str,
+}
+
+/// Every exercise, in the book's order.
+pub const EXERCISES: [Exercise; 6] = [
+    Exercise {
+        number: 1,
+        dir: "chapters/01-ray-cast",
+        package: "ch01-ray-cast",
+        page: "book/src/ch01-ray-casting.md",
+        step: "src/lib.rs",
+        flags: &[],
+        hint: "`hit.facing_normal.dot(sun.direction)` is cos θ; clamp it at 0 so that a \
+               surface facing away gets no sun. The irradiance is k · brightness · cos θ; a \
+               Lambertian surface sends albedo / π of it back (std::f32::consts::PI), and the \
+               ambient term albedo · AMBIENT comes on top. `hit.material.albedo()` is the colour.",
+    },
+    Exercise {
+        number: 2,
+        dir: "chapters/02-shadows",
+        package: "ch02-shadows",
+        page: "book/src/ch02-shadows.md",
+        step: "src/lib.rs",
+        flags: &[],
+        hint: "The feeler's direction is `surface.scene().sun.direction`, and \
+               `surface.trace_shadow_ray(ray)` says whether anything blocks it. Do not start it \
+               at `hit.point` itself: rounding puts half of those starts just inside the surface, \
+               which then shadows itself (speckled \"shadow acne\"). Start it \
+               `surface.epsilon()` along the direction.",
+    },
+    Exercise {
+        number: 3,
+        dir: "chapters/03-reflection",
+        package: "ch03-reflection",
+        page: "book/src/ch03-reflection.md",
+        step: "src/lib.rs",
+        flags: &[],
+        hint: "`hit.material.reflection()` is r. `raylab::optics::reflect(d, n)` mirrors the \
+               ray's direction about `hit.facing_normal`; normalise it, start the new ray \
+               `surface.epsilon()` along it, and hand it to \
+               `surface.send(RayKind::Reflection, ray, r)`: the tracer does the rest.",
+    },
+    Exercise {
+        number: 4,
+        dir: "chapters/04-refraction",
+        package: "ch04-refraction",
+        page: "book/src/ch04-refraction.md",
+        step: "src/lib.rs",
+        flags: &[],
+        hint: "`hit.material.transmission()` is t and `hit.material.ior()` the index. Going in \
+               (`hit.entering`) eta is 1/ior, coming out it is ior. \
+               `raylab::optics::refract(d, hit.facing_normal, eta)` gives `None` past the \
+               critical angle: then send the share t along `reflect(d, n)` as \
+               `RayKind::TotalInternalReflection`. Normalise every new direction and start it \
+               `surface.epsilon()` along itself.",
+    },
+    Exercise {
+        number: 5,
+        dir: "chapters/05-antialiasing",
+        package: "ch05-antialiasing",
+        page: "book/src/ch05-antialiasing.md",
+        step: "src/lib.rs",
+        flags: &[],
+        hint: "Offsets are measured from the pixel's top-left corner, with the pixel 1 wide and \
+               1 high, x to the right and y down. The centre is (0.5, 0.5); each quarter is \
+               0.5 wide, so its middle is 0.25 in from its sides: x and y are each 0.25 or \
+               0.75. The order matters to the last bit of the sum: top left, top right, bottom \
+               left, bottom right. The core averages the five colours in linear light for you.",
+    },
+    Exercise {
+        number: 6,
+        dir: "chapters/06-path-tracing",
+        package: "ch06-path-tracing",
+        page: "book/src/ch06-path-tracing.md",
+        step: "src/integrator.rs",
+        flags: &["--spp=16"],
+        hint: "A surface that neither reflects nor transmits (r + t = 0) is diffuse, whatever u \
+               is. Otherwise the shares are (mirror, refraction) = (r, t), or, with \
+               `Materials::Fresnel` on a material that transmits, (s·F, s·(1 − F)) with s = r + t \
+               and F = `fresnel(d.dot(hit.facing_normal), eta(hit))`. Then cut [0, 1) in that \
+               order: u below the mirror's share is the mirror, below mirror + refraction the \
+               refraction, the rest diffuse. The order matters: the check compares your image with \
+               the reference made from the same random numbers.",
+    },
+];
+
+/// The exercise for chapter `number`, if there is one.
+pub fn exercise(number: u8) -> Option<&'static Exercise> {
+    EXERCISES.iter().find(|e| e.number == number)
+}
+
+/// One region of a chapter's source that the learner writes.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Task {
+    /// The function it belongs to, as its marker names it.
+    pub name: String,
+    /// The one-line task that becomes the `todo!`'s message.
+    pub text: String,
+}
+
+/// A marker that does not pair up, or has no task.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("line {line}: {what}")]
+pub struct MarkerError {
+    pub line: usize,
+    pub what: String,
+}
+
+/// A chapter's source split into what the learner gets and what they write.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Blanked {
+    /// The exercise: the source with each marked region replaced by `todo!`.
+    pub exercise: String,
+    /// The solution: the source with the markers taken out and nothing else.
+    pub solution: String,
+    pub tasks: Vec<Task>,
+}
+
+const START: &str = "// ANCHOR: todo_";
+const END: &str = "// ANCHOR_END: todo_";
+
+/// Blank every marked region of `source`.
+pub fn blank(source: &str) -> Result<Blanked, MarkerError> {
+    let mut exercise = String::with_capacity(source.len());
+    let mut solution = String::with_capacity(source.len());
+    let mut tasks = Vec::new();
+    let mut open: Option<(usize, Task)> = None;
+    for (n, line) in source.lines().enumerate() {
+        let number = n + 1;
+        let trimmed = line.trim_start();
+        if let Some(rest) = trimmed.strip_prefix(START) {
+            if let Some((at, task)) = &open {
+                return Err(error(
+                    number,
+                    format!("`{}` opened on line {at} is not closed", task.name),
+                ));
+            }
+            let task = parse_start(rest).ok_or_else(|| {
+                error(
+                    number,
+                    "a todo marker is `// ANCHOR: todo_NAME \"one-line task\"`".into(),
+                )
+            })?;
+            let indent = &line[..line.len() - trimmed.len()];
+            exercise.push_str(&format!("{indent}todo!({:?})\n", task.text));
+            open = Some((number, task));
+        } else if let Some(name) = trimmed.strip_prefix(END) {
+            match open.take() {
+                Some((_, task)) if task.name == name.trim() => tasks.push(task),
+                _ => {
+                    return Err(error(
+                        number,
+                        format!("`{}` is closed but not open", name.trim()),
+                    ));
+                }
+            }
+        } else {
+            solution.push_str(line);
+            solution.push('\n');
+            if open.is_none() {
+                exercise.push_str(line);
+                exercise.push('\n');
+            }
+        }
+    }
+    if let Some((at, task)) = open {
+        return Err(error(at, format!("`{}` is never closed", task.name)));
+    }
+    Ok(Blanked {
+        exercise,
+        solution,
+        tasks,
+    })
+}
+
+/// `NAME "task"` → the task.
+fn parse_start(rest: &str) -> Option<Task> {
+    let (name, text) = rest.split_once(' ')?;
+    let text = text.trim().strip_prefix('"')?.strip_suffix('"')?;
+    (!name.is_empty() && !text.is_empty() && !text.contains('"')).then(|| Task {
+        name: name.to_owned(),
+        text: text.to_owned(),
+    })
+}
+
+fn error(line: usize, what: String) -> MarkerError {
+    MarkerError { line, what }
+}
+
+impl fmt::Display for Exercise {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "chapter {} ({})", self.number, self.package)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_hint_is_printed_without_runs_of_spaces() {
+        for exercise in EXERCISES {
+            assert!(
+                !exercise.hint.contains("  ") && !exercise.hint.contains('\n'),
+                "chapter {}'s hint has a run of spaces or a line break: {:?}",
+                exercise.number,
+                exercise.hint
+            );
+        }
+    }
+
+    const SOURCE: &str = "\
+/// Doubles.
+pub fn double(x: u32) -> u32 {
+    // ANCHOR: todo_double \"Return twice x.\"
+    // Why: because.
+    x * 2
+    // ANCHOR_END: todo_double
+}
+";
+
+    #[test]
+    fn a_marked_body_becomes_a_todo_with_its_task() {
+        let blanked = blank(SOURCE).unwrap();
+        assert_eq!(
+            blanked.exercise,
+            "/// Doubles.\npub fn double(x: u32) -> u32 {\n    todo!(\"Return twice x.\")\n}\n"
+        );
+        assert_eq!(
+            blanked.tasks,
+            [Task {
+                name: "double".into(),
+                text: "Return twice x.".into()
+            }]
+        );
+    }
+
+    #[test]
+    fn the_solution_is_the_source_without_its_markers() {
+        let blanked = blank(SOURCE).unwrap();
+        assert_eq!(
+            blanked.solution,
+            "/// Doubles.\npub fn double(x: u32) -> u32 {\n    // Why: because.\n    x * 2\n}\n"
+        );
+    }
+
+    #[test]
+    fn an_unclosed_marker_is_an_error_that_names_its_line() {
+        let source = "fn f() {\n    // ANCHOR: todo_f \"Do it.\"\n}\n";
+        assert_eq!(blank(source).unwrap_err().line, 2);
+    }
+
+    #[test]
+    fn a_marker_without_a_task_is_an_error() {
+        let source = "fn f() {\n    // ANCHOR: todo_f\n    // ANCHOR_END: todo_f\n}\n";
+        assert!(blank(source).is_err());
+    }
+
+    #[test]
+    fn every_chapter_marks_exactly_one_step_to_write() {
+        let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
+        for exercise in EXERCISES {
+            let path = format!("{root}/{}/{}", exercise.dir, exercise.step);
+            let source = std::fs::read_to_string(&path).unwrap();
+            let blanked = blank(&source).unwrap_or_else(|e| panic!("{path}: {e}"));
+            assert_eq!(blanked.tasks.len(), 1, "{path}");
+            assert!(blanked.exercise.contains("todo!("), "{path}");
+        }
+    }
+}
