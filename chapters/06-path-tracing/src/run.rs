@@ -142,7 +142,7 @@ impl Format {
 
 /// What a run made.
 #[derive(Debug)]
-pub struct Report {
+pub struct PathReport {
     pub render: PathRender,
     pub out_dir: PathBuf,
     /// Every file written, `render.png` first.
@@ -164,7 +164,7 @@ pub fn run(
     program: &PathProgram,
     options: &CommonFlags,
     flags: &Flags,
-) -> Result<Report, CliError> {
+) -> Result<PathReport, CliError> {
     let settings = settings(options, flags)?;
     let (scene, camera) = options.load_scene()?;
     let out_dir = options.out_dir(program.program.binary);
@@ -206,7 +206,7 @@ pub fn run(
             .map(|()| path)
         })
         .collect::<Result<Vec<_>, _>>()?;
-    Ok(Report {
+    Ok(PathReport {
         render: rendered,
         out_dir,
         written,
@@ -214,7 +214,7 @@ pub fn run(
 }
 
 /// What a run prints: the summary line and where the files are.
-pub fn report_text(binary: &str, report: &Report) -> String {
+pub fn report_text(binary: &str, report: &PathReport) -> String {
     let names: Vec<String> = report
         .written
         .iter()
