@@ -47,6 +47,7 @@ fn every_chapter_writes_its_diagrams_as_valid_pngs_of_the_documented_size() {
                 png_size(&sweep.join(format!("diff-1-vs-{settles}.png"))),
                 (80, 60)
             );
+            the_sentence_agrees_with_the_csv(&sweep);
         }
         // Nothing half-written is left behind.
         for entry in std::fs::read_dir(out).unwrap() {
@@ -332,4 +333,47 @@ fn the_glass_probe_folds_subtrees_too_faint_to_show_and_probe_full_lists_every_r
         folded.contains("refraction (depth 3, weight 0.4900) from"),
         "{folded}"
     );
+}
+
+/// The depth sweep's generated sentence (`summary.md`'s last line) says what
+/// its own CSV says: the depth it names still changed a pixel by more than
+/// one level, by as many levels as it states, and no deeper one did.
+fn the_sentence_agrees_with_the_csv(sweep: &Path) {
+    let summary = std::fs::read_to_string(sweep.join("summary.md")).unwrap();
+    let sentence = summary.trim_end().lines().last().unwrap();
+    let after = |marker: &str| -> u32 {
+        let rest = &sentence[sentence
+            .find(marker)
+            .unwrap_or_else(|| panic!("{sentence}"))
+            + marker.len()..];
+        rest.split(|c: char| !c.is_ascii_digit())
+            .next()
+            .and_then(|n| n.parse().ok())
+            .unwrap_or_else(|| panic!("no number after {marker:?} in {sentence}"))
+    };
+    let settles = after("settles at depth ");
+    let csv = std::fs::read_to_string(sweep.join("changes.csv")).unwrap();
+    let rows: Vec<(u32, u32)> = csv
+        .lines()
+        .skip(1)
+        .map(|line| {
+            let fields: Vec<u32> = line.split(',').map(|f| f.parse().unwrap()).collect();
+            (fields[0], fields[3])
+        })
+        .collect();
+    for &(depth, max_change) in &rows {
+        if depth > settles {
+            assert!(
+                max_change <= 1,
+                "{sentence}, but depth {depth} changed {max_change}"
+            );
+        }
+        if depth == settles {
+            assert!(
+                max_change > 1,
+                "{sentence}, but depth {depth} changed only {max_change}"
+            );
+            assert_eq!(after("still changed a pixel by "), max_change, "{sentence}");
+        }
+    }
 }

@@ -66,14 +66,17 @@ pub fn anchored(text: &str, name: &str) -> Option<String> {
     Some(body)
 }
 
-/// Every `](target)` link in the pages under `src`, with its page.
+/// Every `](target)` link in the pages under `src`, and every `src="…"`
+/// of their HTML (the image sliders), with its page.
 pub fn links(src: &Path) -> Vec<(PathBuf, String)> {
     let mut found = Vec::new();
     for page in pages(src) {
         let text = std::fs::read_to_string(&page).unwrap_or_default();
-        for piece in text.split("](").skip(1) {
-            if let Some(end) = piece.find(')') {
-                found.push((page.clone(), piece[..end].to_owned()));
+        for (open, close) in [("](", ')'), ("src=\"", '"')] {
+            for piece in text.split(open).skip(1) {
+                if let Some(end) = piece.find(close) {
+                    found.push((page.clone(), piece[..end].to_owned()));
+                }
             }
         }
     }

@@ -13,12 +13,13 @@ use raylab_plot::{Anchor, Canvas};
 use crate::{JobError, Size};
 
 /// The files [`make_extras`] writes.
-pub const NAMES: [&str; 7] = [
+pub const NAMES: [&str; 8] = [
     "ch02-epsilon-0.png",
     "ch04-depth-2.png",
     "ch04-depth-3.png",
     "ch05-spp1-crop.png",
     "ch05-spp5-crop.png",
+    "ch05-spp16-crop.png",
     "shadow-offset.png",
     "five-samples.png",
 ];
@@ -29,7 +30,7 @@ fn settings(size: Size, max_depth: u32, spp: u32, epsilon: f32) -> Settings {
         height: size.height,
         max_depth,
         epsilon,
-        sampling: Sampling::new(spp, None, 0).expect("1 or 5"),
+        sampling: Sampling::new(spp, None, 0).expect("1, 5 or a square"),
     }
 }
 
@@ -54,12 +55,13 @@ pub fn make_extras(dir: &Path, size: Size) -> Result<Vec<PathBuf>, JobError> {
     raylab_cli::prepare_out_dir(dir)?;
     let shadows = ch02_shadows::Shadows;
     let refraction = ch04_refraction::Refraction;
-    let images: [RgbImage; 7] = [
+    let images: [RgbImage; 8] = [
         render_srgb(&shadows, &settings(size, 1, 1, 0.0)),
         render_srgb(&refraction, &settings(size, 2, 1, 1e-4)),
         render_srgb(&refraction, &settings(size, 3, 1, 1e-4)),
         horizon_crop(&render_srgb(&refraction, &settings(size, 10, 1, 1e-4))),
         horizon_crop(&render_srgb(&refraction, &settings(size, 10, 5, 1e-4))),
+        horizon_crop(&render_srgb(&refraction, &settings(size, 10, 16, 1e-4))),
         shadow_offset_diagram(),
         five_samples_diagram(),
     ];

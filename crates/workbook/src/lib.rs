@@ -10,6 +10,7 @@ pub mod math;
 pub mod measure;
 pub mod path_tracing;
 pub mod penumbra;
+pub mod speed;
 
 use std::path::{Path, PathBuf};
 use std::time::Duration;
@@ -91,12 +92,6 @@ fn chapter_figures<S: Step>(
 
 /// The book's table of what each chapter's run cost on this machine.
 pub fn speed_table(timings: &[Timing]) -> String {
-    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
-    let build = if cfg!(debug_assertions) {
-        "a debug build"
-    } else {
-        "a release build"
-    };
     let mut text = String::from(
         "| program | image | rays traced | render time | Mrays/s |\n|---|---|---:|---:|---:|\n",
     );
@@ -111,9 +106,9 @@ pub fn speed_table(timings: &[Timing]) -> String {
         ));
     }
     text.push_str(&format!(
-        "\nOne run of each program, as the main job ran it on the machine that built \
-         this book: {cores} core{}, {build}.\n",
-        if cores == 1 { "" } else { "s" }
+        "\nOne cold run of each program, as the main job ran it on the machine that built \
+         this book: {}.\n",
+        speed::machine()
     ));
     text
 }
@@ -218,6 +213,10 @@ pub fn make_figures(
     let speed = figures.join("speed.md");
     save_text(&speed_table(&timings), &speed)?;
     written.push(speed);
+    let pairs = speed::pairs_table(&speed::measure(size)?, &speed::machine());
+    let pairs_path = figures.join("speed-pairs.md");
+    save_text(&pairs, &pairs_path)?;
+    written.push(pairs_path);
     written.extend(extras::make_extras(&figures.join("extras"), size)?);
     written.extend(antialiasing::make_figures(&figures.join("sampling"), size)?);
     written.extend(learn_figures::make_learn_figures(&figures.join("learn"))?);
@@ -263,5 +262,6 @@ mod tests {
         assert_eq!(table.matches(row).count(), 2, "{table}");
         assert!(table.starts_with("| program | image |"), "{table}");
         assert!(table.contains("a debug build") || table.contains("a release build"));
+        assert!(table.contains(std::env::consts::ARCH), "{table}");
     }
 }

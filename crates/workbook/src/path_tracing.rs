@@ -301,6 +301,7 @@ fn comparison(
         dir,
         &[
             ("whitted-and-path-traced.png", &side_by_side),
+            ("whitted.png", &whitted.to_srgb8()),
             ("difference.png", &figure),
         ],
         &[("difference.md", &text)],

@@ -63,6 +63,38 @@ impl DepthSweep {
             .map_or(1, |c| c.depth)
     }
 
+    /// The sweep's conclusion in one sentence, read off the same numbers as
+    /// the table and the CSV: the depth at which the picture settles, the
+    /// largest change that depth still made, and that no deeper one changes
+    /// any pixel by more than [`SETTLED`] level.
+    pub fn settled_sentence(&self, binary: &str) -> String {
+        let n = self.settles_at();
+        let last = self.images.len();
+        let made = self
+            .changes
+            .iter()
+            .find(|c| c.depth == n)
+            .map_or(0, |c| c.max_change);
+        let deeper = if n as usize >= last {
+            format!("the sweep stopped there (at depth {last}): sweep deeper to see it settle")
+        } else if n as usize + 1 == last {
+            format!("depth {last} changes no pixel by more than {SETTLED} level")
+        } else {
+            format!(
+                "from depth {} to {last}, no pixel changes by more than {SETTLED} level",
+                n + 1
+            )
+        };
+        if n <= 1 {
+            return format!("In `{binary}`, the picture settles at depth 1: {deeper}.");
+        }
+        format!(
+            "In `{binary}`, the picture settles at depth {n}: going from depth {} to {n} still \
+             changed a pixel by {made} levels, and {deeper}.",
+            n - 1
+        )
+    }
+
     /// The numbers, as CSV.
     pub fn csv(&self) -> String {
         let mut out = String::from("depth,changed_pixels,changed_over_3,max_change\n");
@@ -94,13 +126,7 @@ impl DepthSweep {
                 c.max_change
             );
         }
-        let n = self.settles_at();
-        let last = self.images.len();
-        let _ = writeln!(
-            out,
-            "\nIn `{binary}`, from depth {n} on no pixel changes by more than {SETTLED} level \
-             (swept up to depth {last})."
-        );
+        let _ = writeln!(out, "\n{}", self.settled_sentence(binary));
         out
     }
 
@@ -242,6 +268,11 @@ mod tests {
             }
         );
         assert_eq!(sweep.settles_at(), 3);
+        assert_eq!(
+            sweep.settled_sentence("ch"),
+            "In `ch`, the picture settles at depth 3: going from depth 2 to 3 still changed a \
+             pixel by 2 levels, and from depth 4 to 5, no pixel changes by more than 1 level."
+        );
         assert_eq!(
             sweep.csv().lines().take(2).collect::<Vec<_>>(),
             ["depth,changed_pixels,changed_over_3,max_change", "2,8,8,40"]

@@ -1,0 +1,257 @@
+//! The book's speed tables, measured by the main job on the reader's own
+//! machine: which processor it is, and chapters timed in turn, round after
+//! round, so that the machine's drift from minute to minute falls on both
+//! sides of every ratio alike.
+
+use std::time::{Duration, Instant};
+
+use ch06_path_tracing::{PathRender, PathSettings};
+use ch07_eight_rays::Like;
+use raylab::frame::thousands;
+use raylab::{Camera, Keep, NoProgress, Rendered, Scene, Settings, Step};
+use raylab_cli::{Chapter, CliError, Options};
+
+use crate::Size;
+
+/// How many rounds each pair runs: the median of a handful of warm
+/// renders, each pair in turn within a round.
+pub const ROUNDS: usize = 5;
+
+/// The machine the tables were measured on, in one line: the processor's
+/// name where the system says it (Linux's `/proc/cpuinfo`), its
+/// architecture, and the cores the renders could use.
+pub fn machine() -> String {
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let model = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|info| {
+            info.lines()
+                .find(|l| l.starts_with("model name") || l.starts_with("Model"))
+                .and_then(|l| l.split_once(':'))
+                .map(|(_, name)| name.trim().to_owned())
+        })
+        .unwrap_or_else(|| "a processor that does not give its name".to_owned());
+    let build = if cfg!(debug_assertions) {
+        "a debug build"
+    } else {
+        "a release build"
+    };
+    format!(
+        "{model} ({}), {cores} core{}, {build}",
+        std::env::consts::ARCH,
+        if cores == 1 { "" } else { "s" }
+    )
+}
+
+/// One pair's rounds: the two programs' median times and rays.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Pair {
+    pub what: String,
+    pub first: &'static str,
+    pub second: String,
+    pub rays: u64,
+    pub first_median: Duration,
+    pub second_median: Duration,
+}
+
+impl Pair {
+    /// How many times as fast the second program was as the first.
+    pub fn ratio(&self) -> f64 {
+        self.first_median.as_secs_f64() / self.second_median.as_secs_f64().max(1e-12)
+    }
+}
+
+/// The middle of `times` (the mean of the two middle ones for an even count).
+pub fn median(mut times: Vec<Duration>) -> Duration {
+    times.sort();
+    let n = times.len();
+    match n {
+        0 => Duration::ZERO,
+        _ if n % 2 == 1 => times[n / 2],
+        _ => (times[n / 2 - 1] + times[n / 2]) / 2,
+    }
+}
+
+/// Time `a` and `b` in turn, `rounds` times each (after one warm-up each),
+/// and return their median times.
+fn interleave(rounds: usize, mut a: impl FnMut(), mut b: impl FnMut()) -> (Duration, Duration) {
+    a();
+    b();
+    let (mut ta, mut tb) = (Vec::new(), Vec::new());
+    for _ in 0..rounds {
+        let start = Instant::now();
+        a();
+        ta.push(start.elapsed());
+        let start = Instant::now();
+        b();
+        tb.push(start.elapsed());
+    }
+    (median(ta), median(tb))
+}
+
+/// A Whitted chapter's default settings at `size`.
+fn settings_of<S: Step>(chapter: &Chapter<S>, size: Size) -> Result<Settings, CliError> {
+    let args = [
+        chapter.binary.to_owned(),
+        format!("--width={}", size.width),
+        format!("--height={}", size.height),
+    ];
+    let options = Options::parse_for(chapter, args).map_err(|e| CliError::Usage(e.to_string()))?;
+    let settings = options.settings()?;
+    Ok(Settings {
+        sampling: settings.sampling.with_lab_five(chapter.step.lab_five()),
+        ..settings
+    })
+}
+
+/// A chapter's render as its program makes it.
+fn render_with<S: Step>(chapter: &Chapter<S>, settings: &Settings) -> Rendered {
+    let (scene, camera) = (Scene::lab(), Camera::lab());
+    (chapter.render)(
+        &scene,
+        &camera,
+        &chapter.step,
+        settings,
+        Keep::IMAGE,
+        &NoProgress,
+    )
+}
+
+/// A Whitted chapter against chapter 7 tracing as it does, in rounds.
+fn whitted_pair<S: Step>(chapter: &Chapter<S>, like: Like, size: Size) -> Result<Pair, CliError> {
+    let seven = ch07_eight_rays::chapter(like);
+    let settings = settings_of(chapter, size)?;
+    let rays = render_with(chapter, &settings).counts.total();
+    assert_eq!(
+        rays,
+        render_with(&seven, &settings).counts.total(),
+        "chapter 7 traces the same rays"
+    );
+    let (first_median, second_median) = interleave(
+        ROUNDS,
+        || drop(render_with(chapter, &settings)),
+        || drop(render_with(&seven, &settings)),
+    );
+    Ok(Pair {
+        what: settings.to_string(),
+        first: chapter.binary,
+        second: format!("{} --like {}", seven.binary, like.binary()),
+        rays,
+        first_median,
+        second_median,
+    })
+}
+
+/// Chapter 6 against chapter 8, the same paths, in rounds.
+fn path_pair(size: Size) -> Result<Pair, CliError> {
+    use ch06_path_tracing::run;
+    let program = &ch06_path_tracing::PROGRAM.program;
+    let args = [
+        program.binary.to_owned(),
+        format!("--width={}", size.width),
+        format!("--height={}", size.height),
+        "--spp=16".to_owned(),
+    ];
+    let (options, flags) = run::parse(program, args).map_err(|e| CliError::Usage(e.to_string()))?;
+    let settings: PathSettings = run::settings(&options, &flags)?;
+    let (scene, camera) = (Scene::lab(), Camera::lab());
+    let six = || ch06_path_tracing::render_paths(&scene, &camera, &settings, &NoProgress);
+    let eight = || ch08_eight_paths::render_eight(&scene, &camera, &settings, &NoProgress);
+    let rays = six().rays;
+    let (first_median, second_median) =
+        interleave(ROUNDS, || drop::<PathRender>(six()), || drop(eight()));
+    Ok(Pair {
+        what: settings.to_string(),
+        first: program.binary,
+        second: ch08_eight_paths::PROGRAM.program.binary.to_owned(),
+        rays,
+        first_median,
+        second_median,
+    })
+}
+
+/// Every pair the book compares: chapters 1-5 against chapter 7 at the
+/// chapters' size, and chapter 6 against chapter 8 at half of it each way.
+pub fn measure(size: Size) -> Result<Vec<Pair>, CliError> {
+    let half = Size {
+        width: (size.width / 2).max(1),
+        height: (size.height / 2).max(1),
+    };
+    Ok(vec![
+        whitted_pair(&ch01_ray_cast::CHAPTER, Like::RayCast, size)?,
+        whitted_pair(&ch02_shadows::CHAPTER, Like::Shadows, size)?,
+        whitted_pair(&ch03_reflection::CHAPTER, Like::Reflection, size)?,
+        whitted_pair(&ch04_refraction::CHAPTER, Like::Refraction, size)?,
+        whitted_pair(&ch05_antialiasing::CHAPTER, Like::AntiAliasing, size)?,
+        path_pair(half)?,
+    ])
+}
+
+/// The pairs as the book's table, with the machine they ran on.
+pub fn pairs_table(pairs: &[Pair], machine: &str) -> String {
+    let mut text = String::from(
+        "| render | rays | one at a time | median | eight at a time | median | ratio |\n\
+         |---|---:|---|---:|---|---:|---:|\n",
+    );
+    for p in pairs {
+        text.push_str(&format!(
+            "| {} | {} | `{}` | {:.1} ms | `{}` | {:.1} ms | {:.2} × |\n",
+            p.what,
+            thousands(p.rays),
+            p.first,
+            p.first_median.as_secs_f64() * 1e3,
+            p.second,
+            p.second_median.as_secs_f64() * 1e3,
+            p.ratio()
+        ));
+    }
+    text.push_str(&format!(
+        "\nWarm renders in the main job's process, each pair in turn, {ROUNDS} rounds after \
+         one warm-up each; the median of each. Measured on the machine that built this book: \
+         {machine}.\n"
+    ));
+    text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_median_of_an_odd_count_is_the_middle_one_and_of_an_even_count_the_mean_of_two() {
+        let ms = |v: &[u64]| v.iter().map(|&m| Duration::from_millis(m)).collect();
+        assert_eq!(median(ms(&[30, 10, 20])), Duration::from_millis(20));
+        assert_eq!(median(ms(&[40, 10, 30, 20])), Duration::from_millis(25));
+        assert_eq!(median(Vec::new()), Duration::ZERO);
+    }
+
+    #[test]
+    fn the_table_states_each_ratio_and_the_machine() {
+        let pair = Pair {
+            what: "800×600, 5 spp".into(),
+            first: "ch05-antialiasing",
+            second: "ch07-eight-rays --like ch05-antialiasing".into(),
+            rays: 11_611_362,
+            first_median: Duration::from_micros(130_000),
+            second_median: Duration::from_micros(29_000),
+        };
+        let table = pairs_table(&[pair], "a test processor (x86_64), 2 cores");
+        assert!(table.contains("| 11,611,362 |"), "{table}");
+        assert!(
+            table.contains("| 130.0 ms |") && table.contains("| 29.0 ms |"),
+            "{table}"
+        );
+        assert!(table.contains("| 4.48 × |"), "{table}");
+        assert!(
+            table.contains("a test processor (x86_64), 2 cores"),
+            "{table}"
+        );
+    }
+
+    #[test]
+    fn the_machine_is_named_with_its_architecture_and_cores() {
+        let line = machine();
+        assert!(line.contains(std::env::consts::ARCH), "{line}");
+        assert!(line.contains("core"), "{line}");
+    }
+}
