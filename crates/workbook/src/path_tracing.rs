@@ -746,7 +746,7 @@ fn convergence_plot(points: &[ConvergencePoint], (w, h): (u32, u32)) -> RgbImage
         "Chapter 6's error against a {REFERENCE_SPP}-path render, {w}×{h}"
     ))
     .x_label("paths per pixel N (log scale)")
-    .y_label("RMSE, linear radiance (log scale)")
+    .y_label("RMSE, linear radiance")
     .log_x()
     .x_range(1.0, 2048.0)
     .log_y(1e-4)
