@@ -171,6 +171,29 @@ fn exit_for(verdict: &learn::check::Verdict) -> ExitCode {
     }
 }
 
+/// A clap error as one line: its message with the lines clap puts under it
+/// (the missing argument's name), and what a chapter may be.
+fn usage_line(error: &clap::Error) -> String {
+    let text = error.render().to_string();
+    let message: Vec<&str> = text
+        .lines()
+        .map(str::trim)
+        .take_while(|l| !l.is_empty())
+        .collect();
+    let message = message.join(" ");
+    let message = message.trim_start_matches("error: ");
+    let first = EXERCISES.first().map_or(1, |e| e.number);
+    let last = EXERCISES.last().map_or(1, |e| e.number);
+    let tip = text.lines().map(str::trim).find(|l| l.starts_with("tip:"));
+    if error.kind() == clap::error::ErrorKind::MissingRequiredArgument {
+        format!("{message}: the chapter, {first} to {last}, e.g. `check {first}` (see --help)")
+    } else if let Some(tip) = tip {
+        format!("{message} ({tip})")
+    } else {
+        format!("{message} (see --help)")
+    }
+}
+
 fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
@@ -183,14 +206,7 @@ fn main() -> ExitCode {
             let _ = e.print();
             return ExitCode::SUCCESS;
         }
-        Err(e) => {
-            let text = e.render().to_string();
-            let first = text.lines().next().unwrap_or("invalid arguments");
-            return usage(format!(
-                "{} (see --help)",
-                first.trim_start_matches("error: ")
-            ));
-        }
+        Err(e) => return usage(usage_line(&e)),
     };
     run(cli).unwrap_or_else(|code| code)
 }

@@ -300,6 +300,16 @@ fn learn(args: &[&str], dir: &Path) -> std::process::Output {
 }
 
 #[test]
+fn a_missing_chapter_is_one_line_that_names_it_and_the_choices() {
+    let output = learn(&["check"], &root());
+    assert_eq!(output.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.contains("<CHAPTER>"), "{stderr}");
+    assert!(stderr.contains("1 to 6"), "{stderr}");
+}
+
+#[test]
 fn a_chapter_with_no_exercise_is_one_line_and_exit_code_2() {
     let output = learn(&["check", "9"], &root());
     assert_eq!(output.status.code(), Some(2));
