@@ -81,7 +81,7 @@ impl Like {
             .ok_or_else(|| {
                 let names: Vec<_> = Like::ALL.iter().map(|l| l.binary()).collect();
                 format!(
-                    "--like '{text}' is not a chapter chapter 7 can imitate: use one of {}",
+                    "--like '{text}' is not a chapter that chapter 7 can imitate: use one of {}",
                     names.join(", ")
                 )
             })

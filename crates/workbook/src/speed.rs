@@ -135,7 +135,7 @@ fn whitted_pair<S: Step>(chapter: &Chapter<S>, like: Like, size: Size) -> Result
     Ok(Pair {
         what: settings.to_string(),
         first: chapter.binary,
-        second: format!("{} --like {}", seven.binary, like.binary()),
+        second: format!("{} --like {}", seven.binary, &like.binary()[..4]),
         rays,
         first_median,
         second_median,
@@ -190,25 +190,29 @@ pub fn measure(size: Size) -> Result<Vec<Pair>, CliError> {
 /// The pairs as the book's table, with the machine they ran on.
 pub fn pairs_table(pairs: &[Pair], machine: &str) -> String {
     let mut text = String::from(
-        "| render | rays | one at a time | median | eight at a time | median | ratio |\n\
-         |---|---:|---|---:|---|---:|---:|\n",
+        "| one at a time | eight at a time | rays | median, one | median, eight | ratio |\n\
+         |---|---|---:|---:|---:|---:|\n",
     );
     for p in pairs {
         text.push_str(&format!(
-            "| {} | {} | `{}` | {:.1} ms | `{}` | {:.1} ms | {:.2} × |\n",
-            p.what,
-            thousands(p.rays),
+            "| `{}` | `{}` | {} | {:.1} ms | {:.1} ms | {:.2} × |\n",
             p.first,
-            p.first_median.as_secs_f64() * 1e3,
             p.second,
+            thousands(p.rays),
+            p.first_median.as_secs_f64() * 1e3,
             p.second_median.as_secs_f64() * 1e3,
             p.ratio()
         ));
     }
+    let settings: Vec<String> = pairs
+        .iter()
+        .map(|p| format!("`{}` {}", p.first, p.what))
+        .collect();
     text.push_str(&format!(
         "\nWarm renders in the main job's process, each pair in turn, {ROUNDS} rounds after \
-         one warm-up each; the median of each. Measured on the machine that built this book: \
-         {machine}.\n"
+         one warm-up each; the median of each. The settings: {}. Measured on the machine \
+         that built this book: {machine}.\n",
+        settings.join("; ")
     ));
     text
 }
@@ -230,7 +234,7 @@ mod tests {
         let pair = Pair {
             what: "800×600, 5 spp".into(),
             first: "ch05-antialiasing",
-            second: "ch07-eight-rays --like ch05-antialiasing".into(),
+            second: "ch07 --like ch05".into(),
             rays: 11_611_362,
             first_median: Duration::from_micros(130_000),
             second_median: Duration::from_micros(29_000),
