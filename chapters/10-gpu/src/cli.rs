@@ -97,7 +97,7 @@ fn run_program(like: Like, options: &Options, shader: Option<PathBuf>) -> Result
     shader::check(&source)?;
 
     let gpu = Gpu::new()?;
-    let tracer = gpu.compile(&source)?;
+    let tracer = gpu.compile(&source, options.max_depth)?;
     if options.watch {
         return crate::watch::watch(&gpu, tracer, like, options, shader_file.as_deref());
     }

@@ -7,6 +7,7 @@
 
 use std::time::{Duration, Instant};
 
+use raylab::{Camera, Scene, Settings};
 use wgpu::util::DeviceExt;
 
 use crate::scene_buffer::Inputs;
@@ -51,6 +52,8 @@ pub struct Tracer {
     pub pipeline: wgpu::ComputePipeline,
     /// The shader's name in messages: `tracer.wgsl`, or the `--shader` file.
     pub name: String,
+    /// The deepest ray its stack has room for.
+    pub max_depth: u32,
     /// How long naga and the driver took to make it.
     pub compile_time: Duration,
 }
@@ -159,9 +162,11 @@ impl Gpu {
     }
 
     /// Check the shader with naga (a mistake is one line with its place),
-    /// then compile it for this GPU.
-    pub fn compile(&self, source: &Source) -> Result<Tracer, ShaderError> {
+    /// then compile it for this GPU with its ray stack sized for
+    /// `max_depth`.
+    pub fn compile(&self, source: &Source, max_depth: u32) -> Result<Tracer, ShaderError> {
         let start = Instant::now();
+        let source = &source.with_stack_size(max_depth);
         shader::check(source)?;
         // A shader can be valid WGSL and still not fit the program: a
         // binding of the wrong type, no `main`. wgpu reports those to an
@@ -189,10 +194,33 @@ impl Gpu {
                 message: one_line(&error.to_string()),
             });
         }
-        Ok(Tracer {
+        let tracer = Tracer {
             pipeline,
             name: source.name.clone(),
+            max_depth,
+            compile_time: Duration::ZERO,
+        };
+        // A driver may compile the shader only when it first runs
+        // (lavapipe does, with LLVM): one pixel makes that part of the
+        // compile time, not of the first frame's.
+        let pixel = Settings {
+            width: 1,
+            height: 1,
+            max_depth,
+            epsilon: 1e-4,
+            sampling: raylab::Sampling::PIXEL_CENTRE,
+        };
+        let features = crate::Like::AntiAliasing.features();
+        let inputs = crate::scene_buffer::pack(&Scene::lab(), &Camera::lab(), &pixel, features)
+            .expect("one ray through the pixel centre packs");
+        self.render(&tracer, &inputs)
+            .map_err(|error| ShaderError::Whole {
+                file: source.name.clone(),
+                message: error.to_string(),
+            })?;
+        Ok(Tracer {
             compile_time: start.elapsed(),
+            ..tracer
         })
     }
 
@@ -200,6 +228,12 @@ impl Gpu {
     /// read the colours, maps and counts back.
     pub fn render(&self, tracer: &Tracer, inputs: &Inputs) -> Result<Frame, GpuError> {
         let start = Instant::now();
+        if inputs.max_depth > tracer.max_depth {
+            return Err(GpuError::Failed(format!(
+                "the tracer was compiled for a max depth of {}, not {}",
+                tracer.max_depth, inputs.max_depth
+            )));
+        }
         let pixels = u64::from(inputs.width) * u64::from(inputs.height);
         let colour_bytes = pixels * 16;
         let limit = self

@@ -20,6 +20,8 @@ pub const SPHERE_SIZE: usize = 48;
 pub struct Inputs {
     pub width: u32,
     pub height: u32,
+    /// The deepest ray (the compiled stack must have room for it).
+    pub max_depth: u32,
     /// `params`: the uniform buffer.
     pub params: Vec<u8>,
     /// `spheres`: one [`SPHERE_SIZE`] record per sphere (at least one, so
@@ -109,6 +111,7 @@ pub fn pack(
     Ok(Inputs {
         width: settings.width,
         height: settings.height,
+        max_depth: settings.max_depth,
         params: params.0,
         spheres: records.0,
         samples: samples.0,

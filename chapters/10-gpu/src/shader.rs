@@ -50,6 +50,34 @@ impl Source {
     }
 }
 
+/// The start of the line of `tracer.wgsl` that sizes the ray stack.
+pub const STACK_SIZE_LINE: &str = "const STACK_SIZE: u32 = ";
+
+impl Source {
+    /// The source with its ray stack sized for `max_depth`: the number on
+    /// the line that starts with [`STACK_SIZE_LINE`] replaced, the lines
+    /// left where they were (so naga's line numbers still fit the file).
+    /// A shader without that line is used as it is.
+    pub fn with_stack_size(&self, max_depth: u32) -> Source {
+        let text = self
+            .text
+            .split_inclusive('\n')
+            .map(|line| {
+                if line.trim_start().starts_with(STACK_SIZE_LINE) {
+                    let end = if line.ends_with('\n') { "\n" } else { "" };
+                    format!("{STACK_SIZE_LINE}{max_depth}u;{end}")
+                } else {
+                    line.to_owned()
+                }
+            })
+            .collect();
+        Source {
+            name: self.name.clone(),
+            text,
+        }
+    }
+}
+
 /// Why a shader cannot be used; each is one line.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum ShaderError {
@@ -125,6 +153,17 @@ mod tests {
     #[test]
     fn the_built_in_tracer_is_valid_wgsl() {
         check(&Source::built_in()).unwrap();
+    }
+
+    #[test]
+    fn the_stack_is_sized_for_the_depth_on_its_own_line() {
+        let built_in = Source::built_in();
+        let sized = built_in.with_stack_size(10);
+        assert!(sized.text.contains("\nconst STACK_SIZE: u32 = 10u;\n"));
+        assert_eq!(sized.text.lines().count(), built_in.text.lines().count());
+        check(&sized).unwrap();
+        let max = raylab::stack::MAX_DEPTH_LIMIT;
+        assert!(built_in.text.contains(&format!("{STACK_SIZE_LINE}{max}u;")));
     }
 
     #[test]

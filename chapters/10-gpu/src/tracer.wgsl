@@ -247,8 +247,11 @@ struct Pending {
 // A GPU has no call stack to recurse on, so the rays still to trace wait
 // in a fixed array in each invocation's private memory. Depth first, each
 // hit sends on at most two rays: one pops and two push, so the stack grows
-// by at most one per level. `--max-depth` is at most 64: 65 places.
-const STACK_SIZE: u32 = 65u;
+// by at most one per level, and `max_depth` places are enough. WGSL
+// cannot size this array at run time (a pipeline's `override` constants
+// size only workgroup arrays), so the program writes `--max-depth` into
+// this line before compiling: a smaller array compiles and runs faster.
+const STACK_SIZE: u32 = 64u;
 
 // The most rays traced for one sample, shadow rays included (the core's
 // `RAY_BUDGET`): past it no ray is sent on.
@@ -256,7 +259,11 @@ const RAY_BUDGET: u32 = 4096u;
 
 // What tracing one sample cost, for the heat maps and the summary line.
 struct Tally {
-    kinds: array<u32, 5>,
+    primary: u32,
+    shadow: u32,
+    reflected: u32,
+    refracted: u32,
+    total_internal: u32,
     deepest: u32,
     rays: u32,
     over_budget: u32,
@@ -265,17 +272,22 @@ struct Tally {
 
 // ANCHOR: trace
 // The colour seen along one primary ray: LAB.md's ray-stack loop, with the
-// features of the chapter chosen by `params.features`.
-fn trace(origin: vec3<f32>, direction: vec3<f32>, tally: ptr<function, Tally>) -> vec3<f32> {
-    var stack: array<Pending, STACK_SIZE>;
+// features of the chapter chosen by `params.features`. The stack is the
+// pixel's, lent to each of its samples in turn.
+fn trace(
+    origin: vec3<f32>,
+    direction: vec3<f32>,
+    stack: ptr<function, array<Pending, STACK_SIZE>>,
+    tally: ptr<function, Tally>,
+) -> vec3<f32> {
+    (*stack)[0] = Pending(origin, direction, 1.0, 1u, PRIMARY);
     var len = 1u;
-    stack[0] = Pending(origin, direction, 1.0, 1u, PRIMARY);
     var colour = vec3<f32>(0.0);
     var rays = 0u;
     while len > 0u {
         len -= 1u;
-        let ray = stack[len];
-        (*tally).kinds[ray.kind] += 1u;
+        let ray = (*stack)[len];
+        count(tally, ray.kind);
         rays += 1u;
         (*tally).deepest = max((*tally).deepest, ray.depth);
 
@@ -285,24 +297,24 @@ fn trace(origin: vec3<f32>, direction: vec3<f32>, tally: ptr<function, Tally>) -
             continue;
         }
 
-        // The rays this hit sends on, and the share of the light they take.
-        var sent: array<Pending, 2>;
-        var sent_len = 0u;
+        // The rays this hit sends on, with the share of the light each
+        // takes as its weight (made the ray's own when it is pushed).
         var kept = 1.0;
+        var reflected: Pending;
+        var transmitted: Pending;
 
         // Chapter 3: the mirror share, along the mirror direction.
         let r = hit.reflection;
         if (params.features & REFLECTION) != 0u && r > 0.0 {
             let d = normalize(reflect(ray.direction, hit.facing_normal));
-            sent[sent_len] = Pending(hit.point + d * params.epsilon, d, r, 0u, REFLECTED);
-            sent_len += 1u;
+            reflected = Pending(hit.point + d * params.epsilon, d, r, 0u, REFLECTED);
             kept -= r;
         }
 
         // Chapter 2: a feeler towards the sun decides k.
         var k = SUN_LIT;
         if (params.features & SHADOWS) != 0u {
-            (*tally).kinds[SHADOW] += 1u;
+            count(tally, SHADOW);
             rays += 1u;
             let feeler = hit.point + params.to_sun * params.epsilon;
             if any_hit(feeler, params.to_sun) {
@@ -319,35 +331,62 @@ fn trace(origin: vec3<f32>, direction: vec3<f32>, tally: ptr<function, Tally>) -
             let bent = refract(ray.direction, hit.facing_normal, eta);
             if all(bent == vec3<f32>(0.0)) {
                 let d = normalize(reflect(ray.direction, hit.facing_normal));
-                sent[sent_len] = Pending(hit.point + d * params.epsilon, d, t, 0u, TOTAL_INTERNAL);
+                transmitted = Pending(hit.point + d * params.epsilon, d, t, 0u, TOTAL_INTERNAL);
             } else {
                 let d = normalize(bent);
-                sent[sent_len] = Pending(hit.point + d * params.epsilon, d, t, 0u, REFRACTED);
+                transmitted = Pending(hit.point + d * params.epsilon, d, t, 0u, REFRACTED);
             }
-            sent_len += 1u;
             kept -= t;
         }
 
         colour += ray.weight * kept * local;
 
-        if ray.depth < params.max_depth && sent_len > 0u {
+        // A weight of 0 marks a ray not sent.
+        let sends = reflected.weight > 0.0 || transmitted.weight > 0.0;
+        if ray.depth < params.max_depth && sends {
             if rays >= RAY_BUDGET {
                 (*tally).over_budget += 1u;
                 continue;
             }
-            // Pushed in the order sent: the reflected ray first, so the
-            // transmitted one is traced first.
-            for (var n = 0u; n < sent_len && len < STACK_SIZE; n++) {
-                var next = sent[n];
-                next.weight = ray.weight * next.weight;
-                next.depth = ray.depth + 1u;
-                stack[len] = next;
-                len += 1u;
-            }
+            // The reflected ray first, so the transmitted one is traced first.
+            push(stack, &len, ray, reflected);
+            push(stack, &len, ray, transmitted);
         }
     }
     (*tally).rays += rays;
     return colour;
+}
+
+// Push a ray sent on from `parent`, one level deeper, with the parent's
+// weight times its share; a share of 0 is a ray not sent.
+fn push(
+    stack: ptr<function, array<Pending, STACK_SIZE>>,
+    len: ptr<function, u32>,
+    parent: Pending,
+    sent: Pending,
+) {
+    if sent.weight > 0.0 && *len < STACK_SIZE {
+        (*stack)[*len] = Pending(
+            sent.origin,
+            sent.direction,
+            parent.weight * sent.weight,
+            parent.depth + 1u,
+            sent.kind,
+        );
+        *len += 1u;
+    }
+}
+
+// One more ray of this kind. (A `switch`, not `kinds[kind]`: an array
+// indexed by a number known only at run time must live in memory.)
+fn count(tally: ptr<function, Tally>, kind: u32) {
+    switch kind {
+        case 0u: { (*tally).primary += 1u; }
+        case 1u: { (*tally).shadow += 1u; }
+        case 2u: { (*tally).reflected += 1u; }
+        case 3u: { (*tally).refracted += 1u; }
+        default: { (*tally).total_internal += 1u; }
+    }
 }
 // ANCHOR_END: trace
 
@@ -360,20 +399,25 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     if id.x >= params.width || id.y >= params.height {
         return;
     }
+    // WGSL clears every variable it makes: made once per pixel, not once
+    // per sample, the stack is cleared once.
+    var stack: array<Pending, STACK_SIZE>;
     var tally: Tally;
     var sum = vec3<f32>(0.0);
     for (var s = 0u; s < params.spp; s++) {
         let direction = camera_ray(id.x, id.y, samples[s]);
-        sum += trace(params.eye, direction, &tally);
+        sum += trace(params.eye, direction, &stack, &tally);
     }
     let index = id.y * params.width + id.x;
     pixels[index] = vec4<f32>(sum / f32(params.spp), 1.0);
     maps[index] = vec2<u32>(tally.deepest, tally.rays);
 
     let row = id.y * COUNTERS_PER_ROW;
-    for (var kind = 0u; kind < KINDS; kind++) {
-        atomicAdd(&counts[row + kind], tally.kinds[kind]);
-    }
+    atomicAdd(&counts[row + PRIMARY], tally.primary);
+    atomicAdd(&counts[row + SHADOW], tally.shadow);
+    atomicAdd(&counts[row + REFLECTED], tally.reflected);
+    atomicAdd(&counts[row + REFRACTED], tally.refracted);
+    atomicAdd(&counts[row + TOTAL_INTERNAL], tally.total_internal);
     atomicAdd(&counts[row + KINDS], tally.over_budget);
 }
 // ANCHOR_END: pixel

@@ -124,9 +124,9 @@ pub fn watch(
         if new_shader {
             shader_saved = None;
             let path = shader.as_ref().map(|w| w.folder.join(&w.name));
-            let compiled = path
-                .as_deref()
-                .map(|p| Source::read(p).and_then(|source| gpu.compile(&source)));
+            let compiled = path.as_deref().map(|p| {
+                Source::read(p).and_then(|source| gpu.compile(&source, options.max_depth))
+            });
             match compiled {
                 Some(Ok(new)) => {
                     tracer = new;

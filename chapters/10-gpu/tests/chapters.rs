@@ -69,17 +69,22 @@ fn reference(like: Like, settings: &Settings, scene: &(Scene, Camera)) -> image:
 /// Render with the shader and compare with the chapter; the figures are
 /// printed (`cargo test -- --nocapture` shows them).
 fn check(gpu: &Gpu, like: Like, scene: &(Scene, Camera), what: &str) {
-    let tracer = gpu.compile(&Source::built_in()).unwrap();
     let settings = settings(like);
+    let tracer = gpu
+        .compile(&Source::built_in(), settings.max_depth)
+        .unwrap();
     let ours = render_image(gpu, &tracer, like, &settings, scene, false).unwrap();
     let theirs = reference(like, &settings, scene);
     let agreement = compare(&ours.rendered.srgb, &theirs);
     println!(
-        "{what}, like {}: {:.3} % of pixels within 3 levels, mean difference {:.4}, max {}",
+        "{what}, like {}: {:.3} % of pixels within 3 levels, mean difference {:.4}, max {}, \
+         {} of {} pixels identical",
         like.binary(),
         agreement.within_3 * 100.0,
         agreement.mean,
-        agreement.max
+        agreement.max,
+        agreement.identical,
+        settings.width * settings.height
     );
     assert!(
         agreement.meets_lab_tolerance(),
@@ -128,7 +133,9 @@ fn the_gpu_counts_the_rays_chapter_4_traces() {
     let Some(gpu) = gpu() else { return };
     let lab = (Scene::lab(), Camera::lab());
     let settings = settings(Like::Refraction);
-    let tracer = gpu.compile(&Source::built_in()).unwrap();
+    let tracer = gpu
+        .compile(&Source::built_in(), settings.max_depth)
+        .unwrap();
     let ours = render_image(&gpu, &tracer, Like::Refraction, &settings, &lab, true).unwrap();
     let theirs = raylab::render(
         &lab.0,
