@@ -292,6 +292,7 @@ impl Gpu {
             }),
         });
 
+        // ANCHOR: dispatch
         let mut encoder = self.device.create_command_encoder(&Default::default());
         {
             let mut pass = encoder.begin_compute_pass(&Default::default());
@@ -302,6 +303,7 @@ impl Gpu {
         self.queue.submit([encoder.finish()]);
         self.wait()?;
         let dispatch = start.elapsed();
+        // ANCHOR_END: dispatch
 
         let start = Instant::now();
         let mut encoder = self.device.create_command_encoder(&Default::default());

@@ -74,6 +74,7 @@ pub fn pack(
     if let Some(pattern) = sampling.pattern().filter(|p| p.is_random()) {
         return Err(PackError::PerPixelPattern(pattern.name()));
     }
+    // ANCHOR: params
     let mut params = Bytes::default();
     // In the order of `struct Params` in tracer.wgsl.
     params.vec3(camera.eye).u32(settings.width);
@@ -90,6 +91,7 @@ pub fn pack(
     params.vec3(scene.ground.checker.even).f32(0.0);
     params.vec3(scene.ground.checker.odd).f32(0.0);
     debug_assert_eq!(params.0.len(), PARAMS_SIZE);
+    // ANCHOR_END: params
 
     let mut records = Bytes::default();
     for sphere in spheres {

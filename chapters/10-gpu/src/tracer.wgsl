@@ -303,6 +303,7 @@ fn trace(
         var reflected: Pending;
         var transmitted: Pending;
 
+        // ANCHOR: reflection
         // Chapter 3: the mirror share, along the mirror direction.
         let r = hit.reflection;
         if (params.features & REFLECTION) != 0u && r > 0.0 {
@@ -310,7 +311,9 @@ fn trace(
             reflected = Pending(hit.point + d * params.epsilon, d, r, 0u, REFLECTED);
             kept -= r;
         }
+        // ANCHOR_END: reflection
 
+        // ANCHOR: shadow_feeler
         // Chapter 2: a feeler towards the sun decides k.
         var k = SUN_LIT;
         if (params.features & SHADOWS) != 0u {
@@ -322,7 +325,9 @@ fn trace(
             }
         }
         let local = local_light(hit, k);
+        // ANCHOR_END: shadow_feeler
 
+        // ANCHOR: refraction
         // Chapter 4: the transmitted share, bent by Snell's law, or
         // mirrored inside when no refracted direction exists.
         let t = hit.transmission;
@@ -338,6 +343,7 @@ fn trace(
             }
             kept -= t;
         }
+        // ANCHOR_END: refraction
 
         colour += ray.weight * kept * local;
 
