@@ -25,9 +25,12 @@
 //! grazing ray onto another checker square or the other side of an edge,
 //! a pixel changes; LAB.md's tolerance (99.5 % of pixels within 3 levels,
 //! mean difference under 0.5) is the bar, and the tests hold the shader
-//! to it against chapters 1–5. Two smaller differences: the shader
-//! counts rays in 32-bit numbers per image row, and `--pattern` jittered,
-//! random and halton (points drawn per pixel on the CPU) are refused.
+//! to it against chapters 1–5. Smaller differences: the shader counts
+//! rays in 32-bit numbers per image row; `--pattern` jittered, random and
+//! halton (points drawn per pixel on the CPU) are refused; and the ray
+//! stack has `--max-depth` places, written into the shader's `STACK_SIZE`
+//! line before it is compiled, where the core's has room for any depth
+//! (a GPU pays for every place, in every invocation).
 
 pub mod cli;
 pub mod gpu;
