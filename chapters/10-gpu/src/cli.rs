@@ -28,8 +28,13 @@ pub fn program(like: Like) -> Program {
 }
 
 /// The shared flags, `--shader`, and a `--watch` that needs no `--scene`.
+/// `--probe` and `--sweep` trace ray by ray on the CPU: hidden here, and
+/// refused with a pointer to the chapters that have them.
 pub fn command(like: Like) -> clap::Command {
     Options::command(&program(like))
+        .mut_arg("probe", |a| a.hide(true))
+        .mut_arg("probe_full", |a| a.hide(true))
+        .mut_arg("sweep", |a| a.hide(true))
         .mut_arg("watch", |a| {
             a.requires(clap::builder::Resettable::<clap::Id>::Reset)
                 .help("Render again whenever the shader (--shader, or this chapter's src/tracer.wgsl) or the --scene file is saved, until Ctrl-C")
