@@ -284,6 +284,7 @@ fn trace(
     var len = 1u;
     var colour = vec3<f32>(0.0);
     var rays = 0u;
+    var over_budget = false;
     while len > 0u {
         len -= 1u;
         let ray = (*stack)[len];
@@ -351,7 +352,7 @@ fn trace(
         let sends = reflected.weight > 0.0 || transmitted.weight > 0.0;
         if ray.depth < params.max_depth && sends {
             if rays >= RAY_BUDGET {
-                (*tally).over_budget += 1u;
+                over_budget = true;
                 continue;
             }
             // The reflected ray first, so the transmitted one is traced first.
@@ -360,6 +361,9 @@ fn trace(
         }
     }
     (*tally).rays += rays;
+    if over_budget {
+        (*tally).over_budget += 1u;
+    }
     return colour;
 }
 
