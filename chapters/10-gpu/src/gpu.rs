@@ -225,30 +225,76 @@ impl Gpu {
     }
 
     /// Render one frame: upload `inputs`, run one invocation per pixel,
-    /// read the colours, maps and counts back.
+    /// read the colours, maps and counts back. An image too big for one
+    /// storage buffer goes in bands of rows, one dispatch each.
     pub fn render(&self, tracer: &Tracer, inputs: &Inputs) -> Result<Frame, GpuError> {
-        let start = Instant::now();
+        let limits = self.device.limits();
+        let limit = limits
+            .max_storage_buffer_binding_size
+            .min(limits.max_buffer_size);
+        let row_bytes = u64::from(inputs.width) * 16;
+        if row_bytes > limit {
+            return Err(GpuError::TooBig {
+                width: inputs.width,
+                height: inputs.height,
+                bytes: row_bytes,
+                limit,
+            });
+        }
+        let rows = (limit / row_bytes).min(u64::from(inputs.height));
+        self.render_in_bands(tracer, inputs, u32::try_from(rows).unwrap_or(u32::MAX))
+    }
+
+    /// [`Gpu::render`] in bands of at most `rows_per_band` rows.
+    pub fn render_in_bands(
+        &self,
+        tracer: &Tracer,
+        inputs: &Inputs,
+        rows_per_band: u32,
+    ) -> Result<Frame, GpuError> {
         if inputs.max_depth > tracer.max_depth {
             return Err(GpuError::Failed(format!(
                 "the tracer was compiled for a max depth of {}, not {}",
                 tracer.max_depth, inputs.max_depth
             )));
         }
-        let pixels = u64::from(inputs.width) * u64::from(inputs.height);
-        let colour_bytes = pixels * 16;
-        let limit = self
-            .device
-            .limits()
-            .max_storage_buffer_binding_size
-            .min(self.device.limits().max_buffer_size);
-        if colour_bytes > limit {
-            return Err(GpuError::TooBig {
-                width: inputs.width,
-                height: inputs.height,
-                bytes: colour_bytes,
-                limit,
-            });
+        let pixels = inputs.width as usize * inputs.height as usize;
+        let mut frame = Frame {
+            pixels: Vec::with_capacity(pixels),
+            maps: Vec::with_capacity(pixels),
+            counts: [0; 5],
+            over_budget: 0,
+            dispatch: Duration::ZERO,
+            readback: Duration::ZERO,
+        };
+        let mut first_row = 0;
+        while first_row < inputs.height {
+            let rows = rows_per_band.max(1).min(inputs.height - first_row);
+            let band = self.render_band(tracer, inputs, first_row, rows)?;
+            frame.pixels.extend(band.pixels);
+            frame.maps.extend(band.maps);
+            for (total, n) in frame.counts.iter_mut().zip(band.counts) {
+                *total += n;
+            }
+            frame.over_budget += band.over_budget;
+            frame.dispatch += band.dispatch;
+            frame.readback += band.readback;
+            first_row += rows;
         }
+        Ok(frame)
+    }
+
+    /// One band of `rows` rows from `first_row` down.
+    fn render_band(
+        &self,
+        tracer: &Tracer,
+        inputs: &Inputs,
+        first_row: u32,
+        rows: u32,
+    ) -> Result<Frame, GpuError> {
+        let start = Instant::now();
+        let pixels = u64::from(inputs.width) * u64::from(rows);
+        let colour_bytes = pixels * 16;
         let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
         let init = |label, contents: &[u8], usage| {
             self.device
@@ -258,7 +304,11 @@ impl Gpu {
                     usage,
                 })
         };
-        let params = init("params", &inputs.params, wgpu::BufferUsages::UNIFORM);
+        let params = init(
+            "params",
+            &inputs.band(first_row, rows),
+            wgpu::BufferUsages::UNIFORM,
+        );
         let spheres = init("spheres", &inputs.spheres, wgpu::BufferUsages::STORAGE);
         let samples = init("samples", &inputs.samples, wgpu::BufferUsages::STORAGE);
         let out = |label, size| {

@@ -14,6 +14,9 @@ use crate::like::Features;
 pub const PARAMS_SIZE: usize = 176;
 /// The bytes of one `Sphere` in `tracer.wgsl`.
 pub const SPHERE_SIZE: usize = 48;
+/// Where `first_row` and `band_rows` sit in `Params`.
+pub const FIRST_ROW_AT: usize = 156;
+pub const BAND_ROWS_AT: usize = 172;
 
 /// Everything the shader reads, as bytes ready for the GPU's buffers.
 #[derive(Clone, Debug, PartialEq)]
@@ -29,6 +32,16 @@ pub struct Inputs {
     pub spheres: Vec<u8>,
     /// `samples`: each sample's offset in the pixel, two `f32`s.
     pub samples: Vec<u8>,
+}
+
+impl Inputs {
+    /// `params` for the band of `rows` rows from `first_row` down.
+    pub fn band(&self, first_row: u32, rows: u32) -> Vec<u8> {
+        let mut params = self.params.clone();
+        params[FIRST_ROW_AT..FIRST_ROW_AT + 4].copy_from_slice(&first_row.to_le_bytes());
+        params[BAND_ROWS_AT..BAND_ROWS_AT + 4].copy_from_slice(&rows.to_le_bytes());
+        params
+    }
 }
 
 /// Why a render cannot go to the shader as asked.
@@ -88,8 +101,9 @@ pub fn pack(
     let count = u32::try_from(spheres.len()).unwrap_or(u32::MAX);
     params.vec3(scene.ground.plane.point).u32(count);
     params.vec3(scene.ground.plane.normal).u32(features.bits());
-    params.vec3(scene.ground.checker.even).f32(0.0);
-    params.vec3(scene.ground.checker.odd).f32(0.0);
+    // The whole image as one band; `Inputs::band` sets another.
+    params.vec3(scene.ground.checker.even).u32(0);
+    params.vec3(scene.ground.checker.odd).u32(settings.height);
     debug_assert_eq!(params.0.len(), PARAMS_SIZE);
     // ANCHOR_END: params
 
@@ -136,18 +150,49 @@ mod tests {
         }
     }
 
-    /// The size naga gives a struct of tracer.wgsl.
-    fn wgsl_size(name: &str) -> usize {
+    /// The size naga gives a struct of tracer.wgsl, and its members' offsets.
+    fn wgsl_layout(name: &str) -> (usize, Vec<(String, usize)>) {
         let module = naga::front::wgsl::parse_str(crate::shader::BUILT_IN).unwrap();
         let (_, ty) = module
             .types
             .iter()
             .find(|(_, ty)| ty.name.as_deref() == Some(name))
             .unwrap();
-        match ty.inner {
-            naga::TypeInner::Struct { span, .. } => span as usize,
+        match &ty.inner {
+            naga::TypeInner::Struct { span, members } => (
+                *span as usize,
+                members
+                    .iter()
+                    .map(|m| (m.name.clone().unwrap_or_default(), m.offset as usize))
+                    .collect(),
+            ),
             _ => panic!("{name} is not a struct"),
         }
+    }
+
+    fn wgsl_size(name: &str) -> usize {
+        wgsl_layout(name).0
+    }
+
+    #[test]
+    fn a_band_s_rows_are_written_where_the_shader_reads_them() {
+        let (_, members) = wgsl_layout("Params");
+        let at = |name: &str| members.iter().find(|(n, _)| n == name).unwrap().1;
+        assert_eq!(at("first_row"), FIRST_ROW_AT);
+        assert_eq!(at("band_rows"), BAND_ROWS_AT);
+        let inputs = pack(
+            &Scene::lab(),
+            &Camera::lab(),
+            &settings(1, None),
+            crate::Like::RayCast.features(),
+        )
+        .unwrap();
+        let band = inputs.band(3, 2);
+        assert_eq!(band[FIRST_ROW_AT..FIRST_ROW_AT + 4], 3u32.to_le_bytes());
+        assert_eq!(band[BAND_ROWS_AT..BAND_ROWS_AT + 4], 2u32.to_le_bytes());
+        // Unbanded, the whole image is one band.
+        let whole = &inputs.params;
+        assert_eq!(whole[BAND_ROWS_AT..BAND_ROWS_AT + 4], 6u32.to_le_bytes());
     }
 
     #[test]

@@ -35,7 +35,11 @@ struct Params {
     // on); bit 2: transmission (chapter 4 on).
     features: u32,
     even: vec3<f32>,
+    // The image goes to the GPU in bands of rows when it is too big for
+    // one buffer: this band's first row and its number of rows.
+    first_row: u32,
     odd: vec3<f32>,
+    band_rows: u32,
 }
 
 // A sphere and its material, as the storage buffer holds them (48 bytes).
@@ -405,29 +409,30 @@ fn count(tally: ptr<function, Tally>, kind: u32) {
 // pixel's samples, summed in order, in linear light.
 @compute @workgroup_size(8, 8)
 fn main(@builtin(global_invocation_id) id: vec3<u32>) {
-    // The tiles overhang the image's right and bottom edges.
-    if id.x >= params.width || id.y >= params.height {
+    // The tiles overhang the band's right and bottom edges.
+    if id.x >= params.width || id.y >= params.band_rows {
         return;
     }
+    let row = params.first_row + id.y;
     // WGSL clears every variable it makes: made once per pixel, not once
     // per sample, the stack is cleared once.
     var stack: array<Pending, STACK_SIZE>;
     var tally: Tally;
     var sum = vec3<f32>(0.0);
     for (var s = 0u; s < params.spp; s++) {
-        let direction = camera_ray(id.x, id.y, samples[s]);
+        let direction = camera_ray(id.x, row, samples[s]);
         sum += trace(params.eye, direction, &stack, &tally);
     }
     let index = id.y * params.width + id.x;
     pixels[index] = vec4<f32>(sum / f32(params.spp), 1.0);
     maps[index] = vec2<u32>(tally.deepest, tally.rays);
 
-    let row = id.y * COUNTERS_PER_ROW;
-    atomicAdd(&counts[row + PRIMARY], tally.primary);
-    atomicAdd(&counts[row + SHADOW], tally.shadow);
-    atomicAdd(&counts[row + REFLECTED], tally.reflected);
-    atomicAdd(&counts[row + REFRACTED], tally.refracted);
-    atomicAdd(&counts[row + TOTAL_INTERNAL], tally.total_internal);
-    atomicAdd(&counts[row + KINDS], tally.over_budget);
+    let counter = id.y * COUNTERS_PER_ROW;
+    atomicAdd(&counts[counter + PRIMARY], tally.primary);
+    atomicAdd(&counts[counter + SHADOW], tally.shadow);
+    atomicAdd(&counts[counter + REFLECTED], tally.reflected);
+    atomicAdd(&counts[counter + REFRACTED], tally.refracted);
+    atomicAdd(&counts[counter + TOTAL_INTERNAL], tally.total_internal);
+    atomicAdd(&counts[counter + KINDS], tally.over_budget);
 }
 // ANCHOR_END: pixel

@@ -193,3 +193,25 @@ fn with_epsilon_0_the_ray_budget_cuts_short_as_many_samples_as_chapter_4() {
     let (a, b) = (ours.rendered.counts.total(), theirs.counts.total());
     assert!(close(a, b), "rays: {a} against {b}");
 }
+
+#[test]
+fn an_image_too_big_for_one_buffer_renders_in_bands_to_the_same_pixels() {
+    // Bands of 7 rows (the last one shorter) against the whole image at once.
+    let Some(gpu) = gpu() else { return };
+    let settings = Settings {
+        width: 64,
+        height: 48,
+        ..settings(Like::AntiAliasing)
+    };
+    let features = Like::AntiAliasing.features();
+    let inputs =
+        ch10_gpu::scene_buffer::pack(&Scene::lab(), &Camera::lab(), &settings, features).unwrap();
+    let tracer = gpu
+        .compile(&Source::built_in(), settings.max_depth)
+        .unwrap();
+    let whole = gpu.render(&tracer, &inputs).unwrap();
+    let bands = gpu.render_in_bands(&tracer, &inputs, 7).unwrap();
+    assert_eq!(bands.pixels, whole.pixels);
+    assert_eq!(bands.maps, whole.maps);
+    assert_eq!(bands.counts, whole.counts);
+}
