@@ -1,5 +1,6 @@
 //! The GPU: finding one, compiling the tracer for it, and one frame —
-//! upload, dispatch, readback.
+//! upload, dispatch, readback, in bands of rows when the image is too big
+//! for one buffer.
 //!
 //! On a machine without a graphics card, Mesa's lavapipe is a Vulkan
 //! "GPU" that runs the shader on the CPU's cores (compiled by LLVM, eight
@@ -34,15 +35,10 @@ pub enum GpuError {
     #[error("the GPU adapter refused a device: {0}")]
     Device(String),
     #[error(
-        "a {width}×{height} image needs a {bytes}-byte buffer, more than this GPU's {limit}: \
-         make the image smaller"
+        "one row of a {width}-pixel-wide image needs {bytes} bytes, more than this GPU's \
+         buffers hold ({limit}): make the image narrower"
     )]
-    TooBig {
-        width: u32,
-        height: u32,
-        bytes: u64,
-        limit: u64,
-    },
+    TooBig { width: u32, bytes: u64, limit: u64 },
     #[error("the GPU failed: {0}")]
     Failed(String),
 }
@@ -236,7 +232,6 @@ impl Gpu {
         if row_bytes > limit {
             return Err(GpuError::TooBig {
                 width: inputs.width,
-                height: inputs.height,
                 bytes: row_bytes,
                 limit,
             });
