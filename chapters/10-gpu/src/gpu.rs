@@ -343,7 +343,7 @@ impl Gpu {
             let mut pass = encoder.begin_compute_pass(&Default::default());
             pass.set_pipeline(&tracer.pipeline);
             pass.set_bind_group(0, &bind_group, &[]);
-            pass.dispatch_workgroups(inputs.width.div_ceil(TILE), inputs.height.div_ceil(TILE), 1);
+            pass.dispatch_workgroups(inputs.width.div_ceil(TILE), rows.div_ceil(TILE), 1);
         }
         self.queue.submit([encoder.finish()]);
         self.wait()?;
