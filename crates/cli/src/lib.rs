@@ -282,6 +282,18 @@ impl CommonFlags {
             .unwrap_or_else(|| Path::new("out").join(binary))
     }
 
+    /// The render settings these flags ask for, once checked together.
+    pub fn settings(&self) -> Result<Settings, CliError> {
+        check_pixel_count(self.width, self.height)?;
+        Ok(Settings {
+            width: self.width,
+            height: self.height,
+            max_depth: self.max_depth,
+            epsilon: self.epsilon,
+            sampling: Sampling::new(self.spp, self.pattern, self.seed)?,
+        })
+    }
+
     /// Read `--scene`, or the lab's scene and camera without it.
     pub fn load_scene(&self) -> Result<(Scene, Camera), CliError> {
         Ok(match &self.scene {
@@ -342,7 +354,7 @@ impl Options {
     /// The render settings these options ask for, once checked together.
     pub fn settings(&self) -> Result<Settings, CliError> {
         let common = &self.common;
-        check_pixel_count(common.width, common.height)?;
+        let settings = common.settings()?;
         if let Some((x, y)) = self.ray_tree.probe
             && (x >= common.width || y >= common.height)
         {
@@ -353,13 +365,7 @@ impl Options {
                 height: common.height,
             });
         }
-        Ok(Settings {
-            width: common.width,
-            height: common.height,
-            max_depth: common.max_depth,
-            epsilon: common.epsilon,
-            sampling: Sampling::new(common.spp, common.pattern, common.seed)?,
-        })
+        Ok(settings)
     }
 }
 
