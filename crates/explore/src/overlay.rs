@@ -85,18 +85,23 @@ pub fn draw(canvas: &mut Canvas, explorer: &Explorer) {
         panel(canvas, PAD, top, &text, canvas.width() as f32 - 2.0 * PAD);
     }
     if explorer.knobs.help {
-        let lines: Vec<(String, Rgb)> = HELP
-            .iter()
-            .map(|(key, what)| (format!("{key:<7} {what}"), TEXT))
-            .collect();
-        let top = PAD * 3.0 + LINE * 3.0;
-        panel(
-            canvas,
-            PAD,
-            top,
-            &lines,
-            440.0f32.min(canvas.width() as f32 - 2.0 * PAD),
-        );
+        help(canvas, PAD, PAD * 3.0 + LINE * 3.0);
+    }
+}
+
+/// The keys in two columns: the key, and what it does.
+fn help(canvas: &mut Canvas, x: f32, y: f32) {
+    const KEYS: f32 = 64.0;
+    let widest = HELP
+        .iter()
+        .map(|(_, what)| canvas.text_width(what, SIZE))
+        .fold(0.0, f32::max);
+    let height = LINE * HELP.len() as f32 + PAD;
+    canvas.fill_rect_translucent(x, y, KEYS + widest + 2.0 * PAD, height, PANEL, 0.8);
+    for (i, (key, what)) in HELP.iter().enumerate() {
+        let top = y + PAD / 2.0 + LINE * i as f32;
+        canvas.text(x + PAD, top, key, SIZE, WARN, Anchor::TOP_LEFT);
+        canvas.text(x + PAD + KEYS, top, what, SIZE, TEXT, Anchor::TOP_LEFT);
     }
 }
 
