@@ -10,14 +10,16 @@ use crate::state::Explorer;
 #[derive(Clone, Debug, PartialEq)]
 pub struct Saved {
     pub png: PathBuf,
-    /// The scene file written beside it when the camera has moved.
+    /// The scene file written beside it, unless this is the lab scene
+    /// from the lab camera.
     pub scene: Option<PathBuf>,
     pub command: String,
 }
 
 /// Write the current frame (the scene only, no overlay) into `dir` as
 /// `explore-NNN.png`, refined first if it is a Whitted preview, and, when
-/// the camera has moved, the scene seen from it as `explore-NNN.toml`.
+/// the camera has moved or the scene is a file's, the scene (seen from the
+/// explorer's camera) as `explore-NNN.toml`.
 pub fn save(explorer: &mut Explorer, dir: &Path) -> Result<Saved, String> {
     if !explorer.knobs.paths {
         // A still frame is the chapter's render; a preview is not.
@@ -31,23 +33,30 @@ pub fn save(explorer: &mut Explorer, dir: &Path) -> Result<Saved, String> {
         .ok_or("there are 9999 saved frames already: choose another folder with --out")?;
     let png = dir.join(format!("{name}.png"));
     save_png(explorer.image(), &png).map_err(|e| e.to_string())?;
-    let scene = if explorer.view.is_home() {
-        None
-    } else {
-        let orbit = explorer
-            .view
-            .orbit()
-            .ok_or("the camera has moved but has no orbit")?;
-        let text = explorer
+    // The scene goes beside the image whenever it is not the lab's: a
+    // scene file may change after the save, and the command must not.
+    let text = match explorer.view.orbit() {
+        Some(orbit) => Some(
+            explorer
+                .source()
+                .with_camera(orbit.eye(), orbit.target, orbit.fov)?,
+        ),
+        None => explorer
             .source()
-            .with_camera(orbit.eye(), orbit.target, orbit.fov)?;
-        let path = dir.join(format!("{name}.toml"));
-        save_text(&text, &path).map_err(|e| e.to_string())?;
-        Some(path)
+            .path
+            .as_ref()
+            .map(|_| explorer.source().text.clone()),
+    };
+    let scene = match text {
+        Some(text) => {
+            let path = dir.join(format!("{name}.toml"));
+            save_text(&text, &path).map_err(|e| e.to_string())?;
+            Some(path)
+        }
+        None => None,
     };
     let scene_flag = scene
         .as_deref()
-        .or(explorer.source().path.as_deref())
         .map(|p| format!(" --scene {}", p.display()))
         .unwrap_or_default();
     let command = command(explorer, &scene_flag, &png);

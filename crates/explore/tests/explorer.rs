@@ -442,3 +442,43 @@ fn a_headless_script_writes_the_frame_it_would_show() {
     let image = image::open(Path::new(&shot)).unwrap().to_rgb8();
     assert_eq!(image.dimensions(), (96, 64));
 }
+
+#[test]
+fn a_saved_frame_of_a_scene_file_keeps_the_scene_as_it_was_when_saved() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("mine.toml");
+    let text = raylab_explore::source::LAB_TOML.replace("radius = 1.0", "radius = 0.7");
+    std::fs::write(&path, &text).unwrap();
+    let mut explorer = Explorer::new(Loaded::file(&path).unwrap(), W, H);
+    let saved = raylab_explore::save::save(&mut explorer, &dir.path().join("out")).unwrap();
+    std::fs::remove_file(&path).unwrap();
+    let scene = saved.scene.expect("a scene file's frame carries its scene");
+    assert_eq!(std::fs::read_to_string(&scene).unwrap(), text);
+    let png = image::open(&saved.png).unwrap().to_rgb8();
+    assert!(png == whitted_render(5, &["--scene", &scene.display().to_string()]));
+}
+
+#[test]
+fn the_lab_from_the_lab_camera_saves_with_no_scene_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut explorer = explorer();
+    key(&mut explorer, '1');
+    let saved = raylab_explore::save::save(&mut explorer, dir.path()).unwrap();
+    assert!(saved.scene.is_none());
+    assert!(!saved.command.contains("--scene"), "{}", saved.command);
+    assert!(
+        saved.command.contains("-p ch01-ray-cast -- --spp 1"),
+        "{}",
+        saved.command
+    );
+}
+
+#[test]
+fn every_book_figure_script_is_a_valid_script() {
+    for (name, text) in raylab_explore::figures::scripts() {
+        assert!(
+            raylab_explore::script::parse(&text).is_ok(),
+            "{name}: {text}"
+        );
+    }
+}
