@@ -3,6 +3,8 @@
 //! help on `?`; the clicked pixel's tree as text beside it. Drawn with
 //! `raylab-plot`'s text (Noto Sans), the figures' own.
 
+use image::RgbImage;
+use raylab_plot::text::text_width;
 use raylab_plot::{Anchor, Canvas, Rgb};
 
 use crate::input::HELP;
@@ -15,6 +17,8 @@ const PANEL: Rgb = [16, 16, 20];
 const TEXT: Rgb = [240, 240, 240];
 const MUTED: Rgb = [170, 175, 185];
 const WARN: Rgb = [255, 170, 90];
+/// The help's column of keys.
+const HELP_KEYS: f32 = 64.0;
 
 /// The overlay's lines for the knobs and the frame.
 pub fn status_lines(explorer: &Explorer) -> Vec<(String, Rgb)> {
@@ -63,14 +67,32 @@ pub fn status_lines(explorer: &Explorer) -> Vec<(String, Rgb)> {
     lines
 }
 
-pub fn draw(canvas: &mut Canvas, explorer: &Explorer) {
-    let lines = status_lines(explorer);
-    panel(canvas, PAD, PAD, &lines, canvas.width() as f32 - 2.0 * PAD);
+/// What a box of the overlay holds.
+enum Content {
+    Lines(Vec<(String, Rgb)>),
+    Help,
+}
+
+/// A box of the overlay, laid out: where it goes, its size, its text.
+struct Panel {
+    x: f32,
+    y: f32,
+    width: f32,
+    height: f32,
+    content: Content,
+}
+
+/// The overlay's boxes on a `width` × `height` frame.
+fn panels(explorer: &Explorer, width: f32, height: f32) -> Vec<Panel> {
+    let mut panels = Vec::new();
+    let status = status_lines(explorer);
+    let lines = status.len();
+    panels.extend(lines_panel(PAD, PAD, status, width - 2.0 * PAD));
     if let Some(probe) = explorer.probe() {
         // Along the bottom, where the ground is, so that the tree and the
         // spheres stay in sight; the coordinates are left out, as the
         // tree itself shows where each ray goes.
-        let room = (canvas.height() as f32 * 0.36 / LINE).floor().max(1.0) as usize;
+        let room = (height * 0.36 / LINE).floor().max(2.0) as usize;
         let mut text: Vec<(String, Rgb)> = probe
             .text
             .lines()
@@ -81,27 +103,117 @@ pub fn draw(canvas: &mut Canvas, explorer: &Explorer) {
             text.truncate(room - 1);
             text.push((format!("… {rest} more lines in the terminal"), MUTED));
         }
-        let top = canvas.height() as f32 - PAD - LINE * text.len() as f32 - PAD;
-        panel(canvas, PAD, top, &text, canvas.width() as f32 - 2.0 * PAD);
+        let top = height - PAD - LINE * text.len() as f32 - PAD;
+        panels.extend(lines_panel(PAD, top, text, width - 2.0 * PAD));
     }
     if explorer.knobs.help {
-        help(canvas, PAD, PAD * 3.0 + LINE * 3.0);
+        let widest = HELP
+            .iter()
+            .map(|(_, what)| text_width(what, SIZE))
+            .fold(0.0, f32::max);
+        panels.push(Panel {
+            x: PAD,
+            y: PAD * 3.0 + LINE * lines as f32,
+            width: HELP_KEYS + widest + 2.0 * PAD,
+            height: LINE * HELP.len() as f32 + PAD,
+            content: Content::Help,
+        });
+    }
+    panels
+}
+
+/// Draw the overlay on a canvas the size of the frame.
+pub fn draw(canvas: &mut Canvas, explorer: &Explorer) {
+    for panel in panels(explorer, canvas.width() as f32, canvas.height() as f32) {
+        draw_panel(canvas, &panel, (panel.x, panel.y));
     }
 }
 
-/// The keys in two columns: the key, and what it does.
-fn help(canvas: &mut Canvas, x: f32, y: f32) {
-    const KEYS: f32 = 64.0;
-    let widest = HELP
+/// Draw the overlay straight onto the frame, a small canvas per box: the
+/// frame itself never goes through a canvas, which would cost two passes
+/// over every pixel of it, every frame.
+pub fn draw_on(frame: &mut RgbImage, explorer: &Explorer) {
+    let (width, height) = frame.dimensions();
+    for panel in panels(explorer, width as f32, height as f32) {
+        let x = panel.x.max(0.0) as u32;
+        let y = panel.y.max(0.0) as u32;
+        if x >= width || y >= height {
+            continue;
+        }
+        let w = (panel.width.ceil() as u32 + 1).min(width - x);
+        let h = (panel.height.ceil() as u32 + 1).min(height - y);
+        let under = image::imageops::crop_imm(frame, x, y, w, h).to_image();
+        let mut canvas = Canvas::new(w, h, [0, 0, 0]);
+        canvas.draw_rgb_image(&under, 0, 0, 1);
+        draw_panel(
+            &mut canvas,
+            &panel,
+            (panel.x - x as f32, panel.y - y as f32),
+        );
+        image::imageops::replace(frame, &canvas.to_rgb_image(), i64::from(x), i64::from(y));
+    }
+}
+
+/// One box, its top left at `(x, y)` of the canvas.
+fn draw_panel(canvas: &mut Canvas, panel: &Panel, (x, y): (f32, f32)) {
+    match &panel.content {
+        Content::Lines(lines) => {
+            canvas.fill_rect_translucent(x, y, panel.width, panel.height, PANEL, 0.72);
+            for (i, (line, colour)) in lines.iter().enumerate() {
+                let top = y + PAD / 2.0 + LINE * i as f32;
+                canvas.text(x + PAD, top, line, SIZE, *colour, Anchor::TOP_LEFT);
+            }
+        }
+        Content::Help => {
+            canvas.fill_rect_translucent(x, y, panel.width, panel.height, PANEL, 0.8);
+            for (i, (key, what)) in HELP.iter().enumerate() {
+                let top = y + PAD / 2.0 + LINE * i as f32;
+                canvas.text(x + PAD, top, key, SIZE, WARN, Anchor::TOP_LEFT);
+                canvas.text(x + PAD + HELP_KEYS, top, what, SIZE, TEXT, Anchor::TOP_LEFT);
+            }
+        }
+    }
+}
+
+/// Lines of text on a dark translucent box at most `width` wide; a line
+/// too long is cut with an ellipsis.
+fn lines_panel(x: f32, y: f32, lines: Vec<(String, Rgb)>, width: f32) -> Option<Panel> {
+    if lines.is_empty() || width <= 2.0 * PAD {
+        return None;
+    }
+    let room = width - 2.0 * PAD;
+    let fitted: Vec<(String, Rgb)> = lines
+        .into_iter()
+        .map(|(line, colour)| (fit(&line, room), colour))
+        .collect();
+    let widest = fitted
         .iter()
-        .map(|(_, what)| canvas.text_width(what, SIZE))
+        .map(|(l, _)| text_width(l, SIZE))
         .fold(0.0, f32::max);
-    let height = LINE * HELP.len() as f32 + PAD;
-    canvas.fill_rect_translucent(x, y, KEYS + widest + 2.0 * PAD, height, PANEL, 0.8);
-    for (i, (key, what)) in HELP.iter().enumerate() {
-        let top = y + PAD / 2.0 + LINE * i as f32;
-        canvas.text(x + PAD, top, key, SIZE, WARN, Anchor::TOP_LEFT);
-        canvas.text(x + PAD + KEYS, top, what, SIZE, TEXT, Anchor::TOP_LEFT);
+    Some(Panel {
+        x,
+        y,
+        width: widest + 2.0 * PAD,
+        height: LINE * fitted.len() as f32 + PAD,
+        content: Content::Lines(fitted),
+    })
+}
+
+fn fit(line: &str, room: f32) -> String {
+    let full = text_width(line, SIZE);
+    if full <= room {
+        return line.to_owned();
+    }
+    // Cut to the share of characters that fits, then by one until it does.
+    let chars: Vec<char> = line.chars().collect();
+    let mut keep = ((chars.len() as f32 * room / full) as usize).min(chars.len());
+    loop {
+        let cut: String = chars[..keep].iter().collect();
+        let cut = format!("{cut}…");
+        if keep == 0 || text_width(&cut, SIZE) <= room {
+            return cut;
+        }
+        keep -= 1;
     }
 }
 
@@ -114,44 +226,4 @@ fn without_coordinates(line: &str) -> String {
         },
         None => line.to_owned(),
     }
-}
-
-/// Lines of text on a dark translucent box at most `width` wide; a line
-/// too long is cut with an ellipsis.
-fn panel(canvas: &mut Canvas, x: f32, y: f32, lines: &[(String, Rgb)], width: f32) {
-    if lines.is_empty() || width <= 2.0 * PAD {
-        return;
-    }
-    let room = width - 2.0 * PAD;
-    let fitted: Vec<(String, Rgb)> = lines
-        .iter()
-        .map(|(line, colour)| (fit(canvas, line, room), *colour))
-        .collect();
-    let widest = fitted
-        .iter()
-        .map(|(l, _)| canvas.text_width(l, SIZE))
-        .fold(0.0, f32::max);
-    let height = LINE * fitted.len() as f32 + PAD;
-    canvas.fill_rect_translucent(x, y, widest + 2.0 * PAD, height, PANEL, 0.72);
-    for (i, (line, colour)) in fitted.iter().enumerate() {
-        canvas.text(
-            x + PAD,
-            y + PAD / 2.0 + LINE * i as f32,
-            line,
-            SIZE,
-            *colour,
-            Anchor::TOP_LEFT,
-        );
-    }
-}
-
-fn fit(canvas: &Canvas, line: &str, room: f32) -> String {
-    if canvas.text_width(line, SIZE) <= room {
-        return line.to_owned();
-    }
-    let mut cut: String = line.to_owned();
-    while !cut.is_empty() && canvas.text_width(&format!("{cut}…"), SIZE) > room {
-        cut.pop();
-    }
-    format!("{cut}…")
 }

@@ -491,11 +491,15 @@ impl Explorer {
     /// The frame the window shows: the scene, the clicked pixel's ray
     /// tree in 3D, and the overlay.
     pub fn compose(&self) -> RgbImage {
+        let Some(probe) = &self.probe else {
+            let mut frame = self.image.clone();
+            crate::overlay::draw_on(&mut frame, self);
+            return frame;
+        };
+        // The tree may cross the whole frame: draw everything on a canvas.
         let mut canvas = raylab_plot::Canvas::new(self.width, self.height, [0, 0, 0]);
         canvas.draw_rgb_image(&self.image, 0, 0, 1);
-        if let Some(probe) = &self.probe {
-            crate::tree3d::draw(&mut canvas, &self.camera(), probe);
-        }
+        crate::tree3d::draw(&mut canvas, &self.camera(), probe);
         crate::overlay::draw(&mut canvas, self);
         canvas.to_rgb_image()
     }

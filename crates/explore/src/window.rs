@@ -141,14 +141,20 @@ impl App {
         surface.resize(width, height).map_err(fail)?;
         let frame = self.explorer.compose();
         let mut buffer = surface.buffer_mut().map_err(fail)?;
-        let (w, h) = (size.width as usize, size.height as usize);
-        // The window may be a size the explorer has not rendered yet: copy
-        // what overlaps, black elsewhere.
-        for (y, row) in buffer.chunks_mut(w).enumerate().take(h) {
-            for (x, out) in row.iter_mut().enumerate() {
-                *out = frame.get_pixel_checked(x as u32, y as u32).map_or(0, |p| {
-                    u32::from(p[0]) << 16 | u32::from(p[1]) << 8 | u32::from(p[2])
-                });
+        let pack =
+            |p: &image::Rgb<u8>| u32::from(p[0]) << 16 | u32::from(p[1]) << 8 | u32::from(p[2]);
+        if frame.dimensions() == (size.width, size.height) {
+            for (out, pixel) in buffer.iter_mut().zip(frame.pixels()) {
+                *out = pack(pixel);
+            }
+        } else {
+            // The window is a size the explorer has not rendered yet: copy
+            // what overlaps, black elsewhere.
+            let (w, h) = (size.width as usize, size.height as usize);
+            for (y, row) in buffer.chunks_mut(w).enumerate().take(h) {
+                for (x, out) in row.iter_mut().enumerate() {
+                    *out = frame.get_pixel_checked(x as u32, y as u32).map_or(0, pack);
+                }
             }
         }
         buffer.present().map_err(fail)?;
