@@ -32,7 +32,7 @@ pub fn scripts() -> Vec<(&'static str, String)> {
         ("explorer-acne.png", "key:2 key:e settle".into()),
         (
             "explorer-ch03-depth-1.png",
-            "key:3 key:down keys:RRRR settle".into(),
+            format!("key:3 {}settle", "key:down ".repeat(9)),
         ),
         ("explorer-tree.png", format!("key:4 click:{gx},{gy} settle")),
         (

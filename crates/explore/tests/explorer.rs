@@ -482,3 +482,28 @@ fn every_book_figure_script_is_a_valid_script() {
         );
     }
 }
+
+#[test]
+fn the_book_figures_keys_set_what_their_names_say() {
+    let knobs_after = |name: &str| {
+        let (_, text) = raylab_explore::figures::scripts()
+            .into_iter()
+            .find(|(n, _)| *n == name)
+            .unwrap();
+        let mut explorer = explorer();
+        for step in raylab_explore::script::parse(&text).unwrap() {
+            if let raylab_explore::script::Step::Input(input @ Input::Key(_)) = step {
+                explorer.handle(input);
+            }
+        }
+        explorer.knobs
+    };
+    let ch03 = knobs_after("explorer-ch03-depth-1.png");
+    assert_eq!((ch03.chapter_number(), ch03.max_depth, ch03.spp), (3, 1, 1));
+    let paths = knobs_after("explorer-paths.png");
+    assert_eq!((paths.chapter_number(), paths.spp), (6, 64));
+    let sun = knobs_after("explorer-sun-20.png");
+    assert_eq!((sun.sun_size, sun.spp), (Some(20.0), 64));
+    let acne = knobs_after("explorer-acne.png");
+    assert_eq!((acne.chapter_number(), acne.epsilon), (2, 0.0));
+}
