@@ -367,8 +367,14 @@ impl Explorer {
 
     fn probe_pixel(&self, pixel: (u32, u32), camera: Camera) -> Probe {
         // Path tracing has no ray tree: a click there shows the tree of
-        // the Whitted chapter chosen last.
-        let trees = match self.knobs.whitted(self.width, self.height, self.knobs.spp) {
+        // the Whitted chapter chosen last, at that chapter's rays per
+        // pixel (not the hundreds of paths per pixel asked for).
+        let spp = if self.knobs.paths {
+            self.knobs.like.defaults().1
+        } else {
+            self.knobs.spp
+        };
+        let trees = match self.knobs.whitted(self.width, self.height, spp) {
             Ok(settings) => {
                 probe::probe(&self.scene, &camera, &self.knobs.step(), &settings, pixel)
             }

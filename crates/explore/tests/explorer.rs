@@ -252,6 +252,9 @@ fn a_click_shows_the_pixels_ray_tree_in_the_scene_and_prints_its_text() {
         .map(|r| r.kind)
         .collect();
     assert!(!kinds.contains(&raylab::RayKind::Refraction));
+    // Path tracing has no tree: the click keeps chapter 3's, at its one ray.
+    key(&mut explorer, '6');
+    assert_eq!(explorer.probe().unwrap().trees.len(), 1);
     explorer.handle(Input::Key(Key::Escape));
     assert!(explorer.probe().is_none());
 }
