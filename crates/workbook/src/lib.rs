@@ -29,6 +29,8 @@ pub enum JobError {
     Write(#[from] raylab_cli::output::WriteError),
     #[error("the book did not build: {0}")]
     Book(String),
+    #[error("the explorer's figures: {0}")]
+    Explorer(String),
 }
 
 /// Image size for the figures: the chapters' own default, or smaller for tests.
@@ -220,6 +222,12 @@ pub fn make_figures(
     written.extend(extras::make_extras(&figures.join("extras"), size)?);
     written.extend(antialiasing::make_figures(&figures.join("sampling"), size)?);
     written.extend(learn_figures::make_learn_figures(&figures.join("learn"))?);
+    // The explorer's screenshots, made through its own state and scripts
+    // without a window, at its window's size.
+    written.extend(
+        raylab_explore::figures::write_book_figures(&figures.join("explorer"))
+            .map_err(JobError::Explorer)?,
+    );
     written.extend(extras::make_scene_figures(
         &figures.join("scenes"),
         scenes,

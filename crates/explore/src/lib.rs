@@ -1,0 +1,52 @@
+//! # raylab-explore: the lab live in a window
+//!
+//! The lab this workbook comes from ran in real time, a fragment shader on
+//! a GPU. The explorer brings that back on the CPU: it renders the lab
+//! scene (or any scene file) again whenever something changes, with the
+//! fast floor on every core (chapter 7's waves for chapters 1–5, chapter
+//! 8's eight paths for path tracing), with the knobs on keys, an orbit
+//! camera on the mouse, a clicked pixel's ray tree drawn into the scene,
+//! and the scene file read again on every save.
+//!
+//! Read first:
+//!
+//! - [`state`]: the explorer without its window, inputs to frame;
+//! - [`knobs`] and [`orbit`]: what the keys and the mouse change;
+//! - [`tree3d`] and [`overlay`]: what is drawn over the scene;
+//! - [`window`]: the window itself.
+//!
+//! **Why winit and softbuffer.** The frame is made on the CPU, a row per
+//! task, as 8-bit sRGB: all a window has to do is show those pixels and
+//! hand back keys and mouse. winit is Rust's common window and event
+//! library; softbuffer copies a CPU buffer into a winit window with no GPU,
+//! no OpenGL and no shader, so the explorer runs where the workbook runs,
+//! virtual machines and Xvfb included. A GPU presenting layer (wgpu,
+//! pixels) would add a large build and a driver to a program whose pixels
+//! never touch the GPU. Only winit's X11 backend is built (XWayland covers
+//! Wayland desktops), and it loads the X libraries when the window opens,
+//! so building needs no system headers.
+//!
+//! **Why the state is apart from the window.** Everything the learner
+//! does arrives as an [`input::Input`], and everything shown is
+//! [`state::Explorer::compose`]'s image: the tests, the `--script` runs
+//! and the book's screenshots drive the same state the window does,
+//! without a screen.
+
+pub mod driver;
+pub mod figures;
+pub mod input;
+pub mod knobs;
+pub mod measure;
+pub mod orbit;
+pub mod overlay;
+pub mod save;
+pub mod script;
+pub mod source;
+pub mod state;
+pub mod tree3d;
+pub mod watch;
+pub mod window;
+
+pub use input::{Button, Input, Key};
+pub use source::Loaded;
+pub use state::Explorer;
