@@ -4,12 +4,14 @@
 
 pub mod antialiasing;
 pub mod book;
+pub mod concepts;
 pub mod extras;
 pub mod learn_figures;
 pub mod math;
 pub mod measure;
 pub mod path_tracing;
 pub mod penumbra;
+pub mod waves;
 
 use std::path::{Path, PathBuf};
 use std::time::Duration;
@@ -221,6 +223,8 @@ pub fn make_figures(
     written.extend(extras::make_extras(&figures.join("extras"), size)?);
     written.extend(antialiasing::make_figures(&figures.join("sampling"), size)?);
     written.extend(learn_figures::make_learn_figures(&figures.join("learn"))?);
+    written.extend(concepts::make_concepts(&figures.join("concepts"))?);
+    written.extend(waves::make_figures(&figures.join("waves"), size)?);
     written.extend(extras::make_scene_figures(
         &figures.join("scenes"),
         scenes,
