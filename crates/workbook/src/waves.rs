@@ -89,7 +89,7 @@ fn soa_figure() -> RgbImage {
     let top = 110.0;
     let grids = [
         (40.0, "array of structures: one record per ray", false),
-        (618.0, "structure of arrays: one register per number", true),
+        (560.0, "structure of arrays: one register per number", true),
     ];
     for (left, title, registers) in grids {
         sheet.text(
@@ -146,7 +146,7 @@ fn soa_figure() -> RgbImage {
             Anchor::TOP_CENTRE,
         );
     }
-    let mid = (40.0 + 8.0 * cell_w + 618.0) / 2.0;
+    let mid = (40.0 + 8.0 * cell_w + 560.0) / 2.0;
     sheet.arrow(
         (mid - 70.0, top + 2.5 * cell_h),
         (mid + 70.0, top + 2.5 * cell_h),
