@@ -13,7 +13,8 @@
 //! - [`wave`]: one pass per depth over a whole row, the rays sent on packed
 //!   densely into the next wave;
 //! - [`render`]: every row on every core, each sample's ray tree summed in
-//!   the scalar tracer's order.
+//!   the scalar tracer's order;
+//! - [`stats`]: how busy the lanes are, wave by wave (for the book's figures).
 //!
 //! The scene, the sky and the optics in lanes (eight rays against the
 //! ground and every sphere, masks instead of branches) are
@@ -26,6 +27,7 @@ pub mod link;
 pub mod render;
 pub mod shade;
 pub mod soa;
+pub mod stats;
 pub mod wave;
 
 use ch01_ray_cast::RayCast;

@@ -316,6 +316,25 @@ impl Waves {
     }
     // ANCHOR_END: waves
 
+    /// [`Waves::trace`], noting how many rays the ledger holds after each
+    /// wave: entry `k` is the number of rays of waves 1 to `k + 1`. For the
+    /// statistics of [`crate::stats`], kept apart from the render's loop.
+    pub fn trace_noting_waves(&mut self, setup: &Setup, primary: &PrimaryRays) -> Vec<usize> {
+        self.counts.add(RayKind::Primary, primary.len() as u64);
+        self.trace_wave(setup, 1, Some(primary));
+        let mut ends = vec![self.ledger.len()];
+        for depth in 2..=setup.max_depth as usize {
+            std::mem::swap(&mut self.rays, &mut self.next);
+            self.next.clear();
+            if self.rays.is_empty() {
+                break;
+            }
+            self.trace_wave(setup, depth, None);
+            ends.push(self.ledger.len());
+        }
+        ends
+    }
+
     /// Trace the wave of rays at `depth` (the camera's `primary` rays, or
     /// those in `rays`), and pack the rays they send on densely into
     /// `next`, those inside a sphere after the others.

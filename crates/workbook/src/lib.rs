@@ -4,6 +4,7 @@
 
 pub mod antialiasing;
 pub mod book;
+pub mod concepts;
 pub mod extras;
 pub mod learn_figures;
 pub mod math;
@@ -11,6 +12,7 @@ pub mod measure;
 pub mod path_tracing;
 pub mod penumbra;
 pub mod speed;
+pub mod waves;
 
 use std::path::{Path, PathBuf};
 use std::time::Duration;
@@ -228,6 +230,8 @@ pub fn make_figures(
         raylab_explore::figures::write_book_figures(&figures.join("explorer"))
             .map_err(JobError::Explorer)?,
     );
+    written.extend(concepts::make_concepts(&figures.join("concepts"))?);
+    written.extend(waves::make_figures(&figures.join("waves"), size)?);
     written.extend(extras::make_scene_figures(
         &figures.join("scenes"),
         scenes,
