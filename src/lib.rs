@@ -66,7 +66,7 @@ pub use camera::Camera;
 pub use frame::{Keep, PixelMaps, Rendered, Settings};
 pub use material::Material;
 pub use ray::{Ray, RayKind};
-pub use render::{NoProgress, Progress, render, render_every_depth};
+pub use render::{NoProgress, Progress, render, render_every_depth, render_with_query};
 pub use sampling::{Pattern, Sampling};
 pub use scene::{Hit, Object, Scene, SceneQuery};
 pub use trace::{Step, Surface, Tracer};

@@ -9,7 +9,7 @@ use crate::camera::Camera;
 use crate::frame::{Keep, Rendered, RowTally, Settings};
 use crate::linear_image::LinearImage;
 use crate::outputs::Outputs;
-use crate::scene::Scene;
+use crate::scene::{Scene, SceneQuery};
 use crate::trace::{Step, Tracer};
 
 /// Told once per finished image row, from any worker: how a program shows
@@ -77,6 +77,21 @@ pub fn render<S: Step + ?Sized>(
     keep: Keep,
     progress: &dyn Progress,
 ) -> Rendered {
+    render_with_query(scene, scene, camera, step, settings, keep, progress)
+}
+
+/// [`render`], with every ray's hit found by `objects` (a [`SceneQuery`]
+/// that gives the scene's own answers faster, such as chapter 9's tree)
+/// instead of by testing the scene's objects one by one.
+pub fn render_with_query<S: Step + ?Sized>(
+    scene: &Scene,
+    objects: &dyn SceneQuery,
+    camera: &Camera,
+    step: &S,
+    settings: &Settings,
+    keep: Keep,
+    progress: &dyn Progress,
+) -> Rendered {
     let start = Instant::now();
     let mut outputs = Outputs::new(settings.width, settings.height, keep);
     // ANCHOR: rows
@@ -88,7 +103,7 @@ pub fn render<S: Step + ?Sized>(
         // a millisecond and more to render the row, and reused for all of
         // the row's pixels.
         .map_init(
-            || Tracer::new(scene, step, settings.max_depth, settings.epsilon),
+            || Tracer::with_query(scene, objects, step, settings.max_depth, settings.epsilon),
             |tracer, (j, mut out)| {
                 let before = tracer.counts();
                 let mut row = RowTally::default();

@@ -3,7 +3,7 @@
 
 use crate::Vec3;
 use crate::ray::{Ray, RayKind};
-use crate::scene::{Hit, Object, Scene};
+use crate::scene::{Hit, Object, Scene, SceneQuery};
 use crate::stack::{MAX_DEPTH_LIMIT, MAX_SECONDARIES, PendingRay, RayStack};
 
 // ANCHOR: step
@@ -42,6 +42,8 @@ const MAX_LOGGED_SHADOWS: usize = 4;
 /// send rays on. One `Surface` is reused for every hit.
 pub struct Surface<'s> {
     scene: &'s Scene,
+    /// Who answers the shadow rays (see [`Tracer::with_query`]).
+    objects: &'s dyn SceneQuery,
     epsilon: f32,
     sent: [Secondary; MAX_SECONDARIES],
     sent_len: usize,
@@ -52,7 +54,7 @@ pub struct Surface<'s> {
 }
 
 impl<'s> Surface<'s> {
-    fn new(scene: &'s Scene, epsilon: f32, log: bool) -> Self {
+    fn new(scene: &'s Scene, objects: &'s dyn SceneQuery, epsilon: f32, log: bool) -> Self {
         let none = (Ray::new(Vec3::ZERO, Vec3::Z), false);
         let unsent = Secondary {
             kind: RayKind::Reflection,
@@ -61,6 +63,7 @@ impl<'s> Surface<'s> {
         };
         Surface {
             scene,
+            objects,
             epsilon,
             sent: [unsent; MAX_SECONDARIES],
             sent_len: 0,
@@ -93,7 +96,7 @@ impl<'s> Surface<'s> {
     /// Trace a shadow ray: `true` if anything at all lies in its way.
     pub fn trace_shadow_ray(&mut self, ray: Ray) -> bool {
         self.shadow_rays += 1;
-        let blocked = self.scene.any_hit(&ray);
+        let blocked = self.objects.any_hit(&ray);
         if let Some((log, len)) = &mut self.logged_shadows
             && *len < MAX_LOGGED_SHADOWS
         {
@@ -213,6 +216,10 @@ pub struct Traced {
 /// Traces rays through one scene with one step; one per thread.
 pub struct Tracer<'s, S: Step + ?Sized> {
     scene: &'s Scene,
+    /// What answers "which object does this ray hit first?": the scene
+    /// itself, testing every object, unless [`Tracer::with_query`] hands
+    /// it a faster way to the same answers.
+    objects: &'s dyn SceneQuery,
     step: &'s S,
     max_depth: u32,
     stack: RayStack,
@@ -225,16 +232,30 @@ pub struct Tracer<'s, S: Step + ?Sized> {
 impl<'s, S: Step + ?Sized> Tracer<'s, S> {
     /// A tracer for rays up to `max_depth` deep (1 to [`MAX_DEPTH_LIMIT`]).
     pub fn new(scene: &'s Scene, step: &'s S, max_depth: u32, epsilon: f32) -> Self {
+        Tracer::with_query(scene, scene, step, max_depth, epsilon)
+    }
+
+    /// A tracer whose rays ask `objects`, not the scene's list, what they
+    /// hit: a [`SceneQuery`] that gives the same answers faster (chapter
+    /// 9's tree of boxes). The scene still gives the sky and the sun.
+    pub fn with_query(
+        scene: &'s Scene,
+        objects: &'s dyn SceneQuery,
+        step: &'s S,
+        max_depth: u32,
+        epsilon: f32,
+    ) -> Self {
         assert!(
             (1..=MAX_DEPTH_LIMIT).contains(&max_depth),
             "max_depth must be 1 to {MAX_DEPTH_LIMIT}"
         );
         Tracer {
             scene,
+            objects,
             step,
             max_depth,
             stack: RayStack::default(),
-            surface: Surface::new(scene, epsilon, false),
+            surface: Surface::new(scene, objects, epsilon, false),
             counts: RayCounts::default(),
             log: None,
             by_depth: None,
@@ -244,7 +265,7 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
     /// Record every ray traced from now on, for a probe.
     pub fn with_log(mut self) -> Self {
         self.log = Some(Vec::new());
-        self.surface = Surface::new(self.scene, self.surface.epsilon, true);
+        self.surface = Surface::new(self.scene, self.objects, self.surface.epsilon, true);
         self
     }
 
@@ -297,7 +318,7 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
             traced.rays += 1;
             traced.deepest = traced.deepest.max(pending.depth);
 
-            let Some(hit) = self.scene.nearest_hit(&pending.ray) else {
+            let Some(hit) = self.objects.nearest_hit(&pending.ray) else {
                 // Nothing in the way: the ray sees the sky.
                 let sky = pending.weight * self.scene.sky.radiance(pending.ray.direction);
                 self.add(&mut traced, &pending, None, sky);
@@ -362,7 +383,7 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
         });
         if let (Some(_), Some((shadows, len))) = (hit, &self.surface.logged_shadows) {
             for &(ray, _) in &shadows[..*len] {
-                let hit = self.scene.nearest_hit(&ray).map(|h| (h.object, h.t));
+                let hit = self.objects.nearest_hit(&ray).map(|h| (h.object, h.t));
                 log.push(TracedRay {
                     kind: RayKind::Shadow,
                     depth: pending.depth,

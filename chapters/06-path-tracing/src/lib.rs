@@ -25,5 +25,5 @@ pub mod run;
 pub mod sun;
 
 pub use integrator::{Materials, PathTracer, Terms};
-pub use render::{PathRender, PathSettings, render_paths, render_with};
+pub use render::{PathRender, PathSettings, render_paths, render_paths_with, render_with};
 pub use run::{Flags, PROGRAM, PathProgram, main, run};

@@ -105,8 +105,20 @@ pub fn render_paths(
     settings: &PathSettings,
     progress: &dyn Progress,
 ) -> PathRender {
+    render_paths_with(scene, scene, camera, settings, progress)
+}
+
+/// [`render_paths`], with every hit found by `objects`: a [`SceneQuery`]
+/// that gives the scene's own answers another way (chapter 9's tree).
+pub fn render_paths_with<Q: SceneQuery>(
+    scene: &Scene,
+    objects: &Q,
+    camera: &Camera,
+    settings: &PathSettings,
+    progress: &dyn Progress,
+) -> PathRender {
     let width = settings.width as usize;
-    render_with(scene, scene, settings, |tracer, rows| {
+    render_with(scene, objects, settings, |tracer, rows| {
         // ANCHOR: rows
         // Every row on every core, each written by its worker straight
         // into its place in the output images.

@@ -285,12 +285,77 @@ fn rays_per_pixel(c: &mut Criterion) {
     group.finish();
 }
 
+/// Chapter 9: rays per second against the number of spheres, every
+/// sphere tested (chapter 5's own render) against the tree (chapter 9's,
+/// its build included), interleaved N by N, on seeded fields of spheres
+/// at chapter 5's settings, 400 × 300. Testing every one of 5,000 or
+/// 10,000 spheres takes seconds a render, so the list is timed there at
+/// 100 × 75, the same view with a sixteenth of the rays: its rays per
+/// second hardly depend on the image size. Then the tree's build over
+/// 10,000 spheres (one core: the build is sequential) and its bytes per
+/// sphere, and the lab scene through chapter 9 against chapter 5.
+/// `cargo bench -p raylab-bench -- "many spheres"`
+fn many_spheres(c: &mut Criterion) {
+    use ch09_many_spheres::figures::{chapter5_settings, field_scene};
+    use ch09_many_spheres::{Bvh, ManySpheres, render_tree};
+    let step = ManySpheres {
+        like: Like::AntiAliasing,
+    };
+    for n in [5, 50, 500, 5_000, 10_000] {
+        let (scene, camera) = field_scene(n);
+        let mut group = c.benchmark_group(format!("many spheres {n}"));
+        group.sampling_mode(SamplingMode::Flat);
+        group.sample_size(10);
+        group.warm_up_time(Duration::from_millis(500));
+        let big = chapter5_settings(400, 300);
+        let list_settings = if n > 1_000 {
+            chapter5_settings(100, 75)
+        } else {
+            big
+        };
+        for (name, settings, tree) in [("list", list_settings, false), ("tree", big, true)] {
+            let render = || {
+                let draw: raylab_cli::Renderer<ManySpheres> =
+                    if tree { render_tree } else { render };
+                draw(&scene, &camera, &step, &settings, Keep::IMAGE, &NoProgress)
+            };
+            group.throughput(Throughput::Elements(render().counts.total()));
+            group.bench_function(
+                format!("{name} {}x{}", settings.width, settings.height),
+                |b| b.iter(render),
+            );
+        }
+        group.finish();
+    }
+    let (scene, _) = field_scene(10_000);
+    let tree = Bvh::build(&scene);
+    eprintln!(
+        "many spheres: the tree over 10,000 spheres: {} nodes, depth {}, {:.1} bytes per sphere",
+        tree.nodes().len(),
+        tree.depth(),
+        tree.bytes() as f64 / 10_000.0
+    );
+    let mut group = c.benchmark_group("many spheres build");
+    group.sample_size(20);
+    group.bench_function("build 10000", |b| b.iter(|| Bvh::build(&scene)));
+    group.finish();
+    let nine = ch09_many_spheres::chapter(Like::AntiAliasing);
+    for round in 1..=3 {
+        let mut group = c.benchmark_group(format!("many spheres lab round {round}"));
+        group.sample_size(10);
+        bench_in(&mut group, &ch05_antialiasing::CHAPTER);
+        bench_in(&mut group, &nine);
+        group.finish();
+    }
+}
+
 criterion_group!(
     benches,
     chapters,
     rays_per_pixel,
     interleaved,
     interleaved_path_tracer,
-    by_chapter
+    by_chapter,
+    many_spheres
 );
 criterion_main!(benches);

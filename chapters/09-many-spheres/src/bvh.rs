@@ -1,0 +1,565 @@
+//! The tree of boxes: built top-down by the surface area heuristic over
+//! binned centres, kept as one flat array of nodes, and searched nearest
+//! child first.
+
+use raylab::scene::{Hit, Object, Scene, SceneQuery};
+use raylab::sphere::Sphere;
+use raylab::{Ray, Vec3};
+
+use crate::aabb::Aabb;
+
+// ANCHOR: node
+/// One node of the tree, 32 bytes. Its box holds every sphere below it.
+///
+/// The nodes are stored depth first in one `Vec`: an inner node's first
+/// child is the very next node, so only the second child's index is kept.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Node {
+    pub min: [f32; 3],
+    pub max: [f32; 3],
+    /// A leaf: the position of its first sphere in [`Bvh::order`]. An inner
+    /// node: the index of its second child.
+    pub first: u32,
+    /// A leaf: how many spheres it holds (1 or more). An inner node: 0.
+    pub count: u32,
+}
+// ANCHOR_END: node
+
+impl Node {
+    pub fn bounds(&self) -> Aabb {
+        Aabb {
+            min: Vec3::from(self.min),
+            max: Vec3::from(self.max),
+        }
+    }
+
+    pub fn is_leaf(&self) -> bool {
+        self.count > 0
+    }
+}
+
+/// The deepest a leaf may lie (the root is at depth 0). The build keeps to
+/// it (see [`SAH_LEVELS`]) so that a search needs only a small fixed stack.
+pub const MAX_DEPTH: usize = 64;
+
+/// The surface area heuristic chooses splits down to this depth; below it
+/// every split halves the spheres, which can take at most 32 more levels
+/// for any count that fits in a `u32`: `32 + 32 = MAX_DEPTH`. Without it a
+/// long run of lopsided splits (one sphere off, the rest on) could make
+/// the tree as deep as it has spheres.
+pub const SAH_LEVELS: usize = MAX_DEPTH - 32;
+
+/// The number of bins the centres are sorted into along the split axis.
+///
+/// pbrt uses 12: the heuristic's cost is smooth in the split position, so
+/// a dozen candidate planes already come within a few per cent of trying
+/// every sphere's centre (Wald 2007 measured 16 bins as good as a full
+/// sweep). 16 costs nothing more here: the binning pass is linear in the
+/// spheres, and the sweep over the bins is 15 steps.
+pub const BINS: usize = 16;
+
+/// The most spheres a leaf may hold.
+pub const MAX_LEAF: usize = 8;
+
+/// The heuristic's cost of stepping into a node (two slab tests), counted
+/// in sphere tests.
+pub const TRAVERSAL_COST: f32 = 1.0;
+
+/// The share of the distance from the ray's start to a box by which the
+/// box is widened during the search. The ray–sphere test of the core
+/// cancels `b² − q`, two numbers of the size of `|o − c|²`, so it may
+/// report a hit as far as about `√(15u)·|o − c| ≈ 9.5e-4·|o − c|` outside
+/// the sphere (`u = 2⁻²⁴`). The list of spheres keeps such hits; so must
+/// the tree, to give the same bytes: `2⁻⁹ ≈ 2e-3` covers it twice over.
+pub const DISTANCE_SLACK: f32 = 1.0 / 512.0;
+
+/// The share of the coordinates' size by which every box is widened: for
+/// the rounding of `o − c` and of the box's own faces, a few `u` of the
+/// largest coordinate involved. `2⁻²⁰ = 16u`.
+pub const COORDINATE_SLACK: f32 = 1.0 / 1_048_576.0;
+
+/// A bounding volume hierarchy over a scene's spheres. The ground plane,
+/// which no box can hold, stays outside it and is tested first, as the
+/// list of objects does.
+#[derive(Clone, Debug)]
+pub struct Bvh<'s> {
+    scene: &'s Scene,
+    nodes: Vec<Node>,
+    /// The spheres (centre and radius) in the order the leaves hold them.
+    spheres: Vec<[f32; 4]>,
+    /// For each of those, its index in the scene's list, which breaks ties.
+    order: Vec<u32>,
+    /// The largest coordinate of any sphere's centre, for [`COORDINATE_SLACK`].
+    scale: f32,
+    depth: usize,
+}
+
+/// What the search of one ray did, for the figures.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SearchStats {
+    /// Boxes tested with the slab test.
+    pub boxes: u32,
+    /// Spheres tested with the ray–sphere test.
+    pub spheres: u32,
+}
+
+/// One sphere during the build: its box, its box's centre, its index.
+#[derive(Clone, Copy, Debug)]
+struct Item {
+    bounds: Aabb,
+    centre: Vec3,
+    index: u32,
+}
+
+impl<'s> Bvh<'s> {
+    // ANCHOR: build
+    /// Build the tree over `scene`'s spheres, top down.
+    ///
+    /// # Panics
+    /// If the scene has more than `u32::MAX` spheres.
+    pub fn build(scene: &'s Scene) -> Bvh<'s> {
+        let mut items: Vec<Item> = scene
+            .spheres()
+            .iter()
+            .enumerate()
+            .map(|(i, s)| {
+                let bounds = Aabb::around_sphere(&s.shape);
+                let index = u32::try_from(i).expect("at most u32::MAX spheres");
+                Item {
+                    bounds,
+                    centre: bounds.centre(),
+                    index,
+                }
+            })
+            .collect();
+        let mut bvh = Bvh {
+            scene,
+            nodes: Vec::with_capacity(items.len()),
+            spheres: Vec::with_capacity(items.len()),
+            order: Vec::with_capacity(items.len()),
+            scale: items
+                .iter()
+                .map(|i| i.centre.abs().max_element())
+                .fold(0.0, f32::max),
+            depth: 0,
+        };
+        if !items.is_empty() {
+            bvh.build_node(&mut items, 0);
+        }
+        for &index in &bvh.order {
+            let s = &scene.spheres()[index as usize].shape;
+            bvh.spheres
+                .push([s.centre.x, s.centre.y, s.centre.z, s.radius]);
+        }
+        bvh
+    }
+
+    /// Add the node for `items` (and everything below it) at `depth`;
+    /// return its index.
+    fn build_node(&mut self, items: &mut [Item], depth: usize) -> usize {
+        self.depth = self.depth.max(depth);
+        let bounds = items.iter().fold(Aabb::EMPTY, |b, i| b.union(i.bounds));
+        let me = self.nodes.len();
+        self.nodes.push(Node {
+            min: bounds.min.into(),
+            max: bounds.max.into(),
+            first: 0,
+            count: 0,
+        });
+        let Some(half) = self.split(items, bounds, depth) else {
+            // A leaf: its spheres, in their new order.
+            self.nodes[me].first = self.order.len() as u32;
+            self.nodes[me].count = items.len() as u32;
+            self.order.extend(items.iter().map(|i| i.index));
+            return me;
+        };
+        let (left, right) = items.split_at_mut(half);
+        self.build_node(left, depth + 1);
+        let second = self.build_node(right, depth + 1);
+        self.nodes[me].first = second as u32;
+        me
+    }
+
+    /// Where to cut `items` in two (after reordering them), or `None` to
+    /// make them a leaf.
+    fn split(&self, items: &mut [Item], bounds: Aabb, depth: usize) -> Option<usize> {
+        let n = items.len();
+        if n == 1 {
+            return None;
+        }
+        let centres = items.iter().fold(Aabb::EMPTY, |b, i| b.grow(i.centre));
+        let extent = centres.max - centres.min;
+        let axis = extent.max_position();
+        if depth < SAH_LEVELS && extent[axis] > 0.0 {
+            match sah_split(items, bounds, centres, axis) {
+                Decision::Leaf if n <= MAX_LEAF => return None,
+                Decision::Split(half) => return Some(half),
+                // Too many for a leaf, or the bins found no cut.
+                Decision::Leaf | Decision::NoCut => {}
+            }
+        }
+        if n <= MAX_LEAF {
+            return None;
+        }
+        // Halve by count at the median centre: always progress, even when
+        // every centre is the same point.
+        let half = n / 2;
+        items.select_nth_unstable_by(half, |a, b| a.centre[axis].total_cmp(&b.centre[axis]));
+        Some(half)
+    }
+    // ANCHOR_END: build
+
+    /// The nodes, root first, depth first.
+    pub fn nodes(&self) -> &[Node] {
+        &self.nodes
+    }
+
+    /// The depth of the deepest leaf (the root alone is depth 0).
+    pub fn depth(&self) -> usize {
+        self.depth
+    }
+
+    /// The scene the tree was built over.
+    pub fn scene(&self) -> &'s Scene {
+        self.scene
+    }
+
+    /// The spheres' indices in the scene's list, in the leaves' order.
+    pub fn order(&self) -> &[u32] {
+        &self.order
+    }
+
+    /// The bytes the tree keeps beside the scene: its nodes, the spheres'
+    /// copies and their indices.
+    pub fn bytes(&self) -> usize {
+        self.nodes.len() * std::mem::size_of::<Node>()
+            + self.spheres.len() * std::mem::size_of::<[f32; 4]>()
+            + self.order.len() * std::mem::size_of::<u32>()
+    }
+
+    // ANCHOR: pad
+    /// How far each box is widened for this ray: a small share of the
+    /// distance from the ray's start to the box's farthest corner (bounding
+    /// the distance to every centre inside), for the sphere test's
+    /// cancellation, plus a rounding's worth of the coordinates' size.
+    #[inline]
+    fn pad(&self, origin: Vec3, node: &Node, coordinates: f32) -> f32 {
+        let far = (origin - Vec3::from(node.min))
+            .abs()
+            .max((origin - Vec3::from(node.max)).abs());
+        DISTANCE_SLACK * far.element_sum() + coordinates
+    }
+    // ANCHOR_END: pad
+
+    /// The entry distance of the ray into `node`'s widened box, up to `t_max`.
+    #[inline]
+    fn enter(
+        &self,
+        ray: &Ray,
+        inverse: Vec3,
+        node: usize,
+        coordinates: f32,
+        t_max: f32,
+    ) -> Option<f32> {
+        let node = &self.nodes[node];
+        let pad = self.pad(ray.origin, node, coordinates);
+        node.bounds()
+            .slab_test(ray.origin, inverse, pad, 0.0, t_max)
+    }
+
+    #[inline]
+    fn sphere(&self, k: usize) -> Sphere {
+        let [x, y, z, radius] = self.spheres[k];
+        Sphere {
+            centre: Vec3::new(x, y, z),
+            radius,
+        }
+    }
+
+    // ANCHOR: nearest
+    /// The nearest hit, as [`Scene::nearest_hit`] finds it, to the bit,
+    /// and what the search did.
+    ///
+    /// The ground first, as the list does. Then the tree: a node is opened
+    /// only if the ray enters its box no farther than the nearest hit so
+    /// far (a box entered exactly there may hold a tie), the nearer child
+    /// first, so that the farther one is often skipped. A sphere replaces
+    /// the best hit if it is nearer, or as near and earlier in the list:
+    /// the list's own rule, "ties go to the earlier object".
+    pub fn nearest_hit_with_stats(&self, ray: &Ray) -> (Option<Hit>, SearchStats) {
+        let mut stats = SearchStats::default();
+        let (mut nearest, mut object) = (f32::INFINITY, None);
+        if let Some(t) = self.scene.ground.plane.intersect(ray) {
+            (nearest, object) = (t, Some(Object::Ground));
+        }
+        if self.nodes.is_empty() {
+            return (
+                object.map(|o| self.scene.hit_record(ray, nearest, o)),
+                stats,
+            );
+        }
+        let inverse = ray.direction.recip();
+        let coordinates = COORDINATE_SLACK * (ray.origin.abs().max_element() + self.scale);
+        // One pending node per level at most, plus the one just pushed.
+        let mut stack = [(0u32, 0.0f32); MAX_DEPTH + 2];
+        let mut len = 0;
+        stats.boxes += 1;
+        if let Some(t) = self.enter(ray, inverse, 0, coordinates, nearest) {
+            stack[0] = (0, t);
+            len = 1;
+        }
+        while len > 0 {
+            len -= 1;
+            let (index, entered) = stack[len];
+            if entered > nearest {
+                continue; // something nearer was found since it was pushed
+            }
+            let node = &self.nodes[index as usize];
+            if node.is_leaf() {
+                let first = node.first as usize;
+                for k in first..first + node.count as usize {
+                    stats.spheres += 1;
+                    let Some(t) = self.sphere(k).intersect(ray) else {
+                        continue;
+                    };
+                    let i = self.order[k] as usize;
+                    let earlier = matches!(object, Some(Object::Sphere(j)) if i < j);
+                    if t < nearest || (t == nearest && earlier) {
+                        (nearest, object) = (t, Some(Object::Sphere(i)));
+                    }
+                }
+                continue;
+            }
+            let (a, b) = (index as usize + 1, node.first as usize);
+            stats.boxes += 2;
+            let ta = self.enter(ray, inverse, a, coordinates, nearest);
+            let tb = self.enter(ray, inverse, b, coordinates, nearest);
+            // Push the farther child first, so that the nearer is popped next.
+            let mut push = |child: usize, t: f32| {
+                stack[len] = (child as u32, t);
+                len += 1;
+            };
+            match (ta, tb) {
+                (Some(ta), Some(tb)) if ta <= tb => (push(b, tb), push(a, ta)),
+                (Some(ta), Some(tb)) => (push(a, ta), push(b, tb)),
+                (Some(ta), None) => (push(a, ta), ()),
+                (None, Some(tb)) => (push(b, tb), ()),
+                (None, None) => ((), ()),
+            };
+        }
+        let hit = object.map(|o| self.scene.hit_record(ray, nearest, o));
+        (hit, stats)
+    }
+    // ANCHOR_END: nearest
+
+    // ANCHOR: any
+    /// Whether the ray meets anything, as [`Scene::any_hit`] says: the
+    /// shadow ray's question, answered at the first hit found, in any order.
+    pub fn any_hit(&self, ray: &Ray) -> bool {
+        if self.scene.ground.plane.intersect(ray).is_some() {
+            return true;
+        }
+        if self.nodes.is_empty() {
+            return false;
+        }
+        let inverse = ray.direction.recip();
+        let coordinates = COORDINATE_SLACK * (ray.origin.abs().max_element() + self.scale);
+        let mut stack = [0u32; MAX_DEPTH + 2];
+        let mut len = 1;
+        while len > 0 {
+            len -= 1;
+            let index = stack[len] as usize;
+            if self
+                .enter(ray, inverse, index, coordinates, f32::INFINITY)
+                .is_none()
+            {
+                continue;
+            }
+            let node = &self.nodes[index];
+            if node.is_leaf() {
+                let first = node.first as usize;
+                if (first..first + node.count as usize)
+                    .any(|k| self.sphere(k).intersect(ray).is_some())
+                {
+                    return true;
+                }
+                continue;
+            }
+            stack[len] = node.first;
+            stack[len + 1] = index as u32 + 1;
+            len += 2;
+        }
+        false
+    }
+    // ANCHOR_END: any
+}
+
+impl SceneQuery for Bvh<'_> {
+    fn nearest_hit(&self, ray: &Ray) -> Option<Hit> {
+        self.nearest_hit_with_stats(ray).0
+    }
+
+    fn any_hit(&self, ray: &Ray) -> bool {
+        Bvh::any_hit(self, ray)
+    }
+}
+
+/// What the binned surface area heuristic decided for a node.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Decision {
+    /// Keep the spheres together: a leaf is cheaper than any cut.
+    Leaf,
+    /// Cut after this many spheres (the items have been reordered).
+    Split(usize),
+    /// Every cut leaves one side empty (or the costs are not numbers).
+    NoCut,
+}
+
+// ANCHOR: sah
+/// The surface area heuristic, over [`BINS`] bins of the centres along
+/// `axis`.
+///
+/// A ray that passes through a box passes through a box inside it with a
+/// probability of about the ratio of their surface areas. So a cut of `n`
+/// spheres into `A` (`n_A` spheres) and `B` costs, in sphere tests,
+///
+/// ```text
+/// cost = TRAVERSAL_COST + (area(A)·n_A + area(B)·n_B) / area(node)
+/// ```
+///
+/// against `n` for a leaf. Trying a cut at every bin boundary takes one
+/// pass over the spheres (binning) and two over the bins (the boxes and
+/// counts to the left and to the right of each boundary).
+fn sah_split(items: &mut [Item], bounds: Aabb, centres: Aabb, axis: usize) -> Decision {
+    let (low, extent) = (centres.min[axis], centres.max[axis] - centres.min[axis]);
+    let bin_of = |item: &Item| {
+        let f = (item.centre[axis] - low) / extent * BINS as f32;
+        // `as` saturates (and sends NaN to 0): never outside the bins.
+        (f as usize).min(BINS - 1)
+    };
+    let mut bins = [(Aabb::EMPTY, 0usize); BINS];
+    for item in items.iter() {
+        let bin = &mut bins[bin_of(item)];
+        *bin = (bin.0.union(item.bounds), bin.1 + 1);
+    }
+    // right[k]: the area and count of bins k.. (the right side of cut k).
+    let mut right = [(0.0f32, 0usize); BINS];
+    let mut acc = (Aabb::EMPTY, 0);
+    for k in (1..BINS).rev() {
+        acc = (acc.0.union(bins[k].0), acc.1 + bins[k].1);
+        right[k] = (acc.0.surface_area(), acc.1);
+    }
+    let mut best = (f32::INFINITY, 0);
+    let mut left = (Aabb::EMPTY, 0);
+    for k in 1..BINS {
+        left = (left.0.union(bins[k - 1].0), left.1 + bins[k - 1].1);
+        let (n_a, (area_b, n_b)) = (left.1, right[k]);
+        if n_a == 0 || n_b == 0 {
+            continue;
+        }
+        let cost = left.0.surface_area() * n_a as f32 + area_b * n_b as f32;
+        if cost < best.0 {
+            best = (cost, k);
+        }
+    }
+    if best.1 == 0 {
+        return Decision::NoCut;
+    }
+    let area = bounds.surface_area();
+    let cost = TRAVERSAL_COST + best.0 / area;
+    // A flat or point node (area 0) gives NaN or ∞: cut it, by count.
+    if !cost.is_finite() {
+        return Decision::NoCut;
+    }
+    if cost >= items.len() as f32 {
+        return Decision::Leaf;
+    }
+    let half = partition(items, |item| bin_of(item) < best.1);
+    if half == 0 || half == items.len() {
+        Decision::NoCut
+    } else {
+        Decision::Split(half)
+    }
+}
+// ANCHOR_END: sah
+
+/// Move the items for which `left` holds to the front; return how many.
+fn partition(items: &mut [Item], left: impl Fn(&Item) -> bool) -> usize {
+    let mut first = 0;
+    for k in 0..items.len() {
+        if left(&items[k]) {
+            items.swap(first, k);
+            first += 1;
+        }
+    }
+    first
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_node_is_32_bytes() {
+        assert_eq!(std::mem::size_of::<Node>(), 32);
+    }
+
+    #[test]
+    fn the_bound_on_depth_holds_for_any_u32_count() {
+        // Past SAH_LEVELS every split halves: ⌈log2(u32::MAX)⌉ = 32 levels more.
+        assert_eq!(SAH_LEVELS + 32, MAX_DEPTH);
+    }
+
+    #[test]
+    fn the_heuristic_cuts_two_far_clusters_apart() {
+        // Four unit boxes at x = 0 and four at x = 100: cutting between
+        // them costs 1 + (6·4 + 6·4)/area, far below the leaf's 8.
+        let mut items: Vec<Item> = (0..8)
+            .map(|i| {
+                let x = if i % 2 == 0 { 0.0 } else { 100.0 };
+                let min = Vec3::new(x, 0.0, 0.0);
+                let bounds = Aabb {
+                    min,
+                    max: min + Vec3::ONE,
+                };
+                Item {
+                    bounds,
+                    centre: bounds.centre(),
+                    index: i,
+                }
+            })
+            .collect();
+        let bounds = items.iter().fold(Aabb::EMPTY, |b, i| b.union(i.bounds));
+        let centres = items.iter().fold(Aabb::EMPTY, |b, i| b.grow(i.centre));
+        assert_eq!(
+            sah_split(&mut items, bounds, centres, 0),
+            Decision::Split(4)
+        );
+        assert!(items[..4].iter().all(|i| i.index % 2 == 0));
+    }
+
+    #[test]
+    fn the_heuristic_keeps_two_overlapping_spheres_in_one_leaf() {
+        // Two unit boxes overlapping almost entirely: a cut costs
+        // 1 + (6·1 + 6·1)/area(node) ≈ 3 > 2, the leaf's cost.
+        let mut items: Vec<Item> = [0.0, 0.01]
+            .iter()
+            .enumerate()
+            .map(|(i, &x)| {
+                let min = Vec3::new(x, 0.0, 0.0);
+                let bounds = Aabb {
+                    min,
+                    max: min + Vec3::ONE,
+                };
+                Item {
+                    bounds,
+                    centre: bounds.centre(),
+                    index: i as u32,
+                }
+            })
+            .collect();
+        let bounds = items.iter().fold(Aabb::EMPTY, |b, i| b.union(i.bounds));
+        let centres = items.iter().fold(Aabb::EMPTY, |b, i| b.grow(i.centre));
+        assert_eq!(sah_split(&mut items, bounds, centres, 0), Decision::Leaf);
+    }
+}

@@ -1,0 +1,100 @@
+//! Chapter 9: many spheres.
+//!
+//! Every ray of chapters 1–8 is tested against every sphere: fine for the
+//! lab's five, hopeless for a field of thousands, where nearly every test
+//! misses. This chapter puts the spheres in a tree of boxes — a bounding
+//! volume hierarchy — and lets a ray skip every sphere whose box it does
+//! not pass through, while finding exactly the hit the list finds:
+//!
+//! - [`aabb`]: axis-aligned boxes and the slab test;
+//! - [`bvh`]: the tree, built top-down by the surface area heuristic over
+//!   binned centres, stored as one flat array, searched nearest child
+//!   first (and, for shadow rays, to the first hit);
+//! - [`field`]: seeded fields of N spheres to try it on.
+//!
+//! The tree is a [`raylab::SceneQuery`]: any tracer that asks a query
+//! rather than the scene (the core's `Tracer::with_query`, chapter 6's
+//! `render_with`) traces through it and makes the same bytes. `--like
+//! chNN-…` traces as any of chapters 1–5.
+
+pub mod aabb;
+pub mod bvh;
+pub mod field;
+pub mod figures;
+pub mod like;
+
+use ch01_ray_cast::RayCast;
+use ch02_shadows::Shadows;
+use ch03_reflection::Reflection;
+use ch04_refraction::Refraction;
+use ch05_antialiasing::AntiAliasing;
+use raylab::camera::Camera;
+use raylab::frame::{Keep, Rendered, Settings};
+use raylab::render::{Progress, render_with_query};
+use raylab::{Hit, Ray, Scene, Step, Surface, Vec3};
+use raylab_cli::Chapter;
+
+pub use bvh::Bvh;
+pub use like::Like;
+
+/// The program's name, which is also its default output folder.
+pub const BINARY: &str = "ch09-many-spheres";
+
+/// Chapter 9's step: a Whitted chapter's shading, unchanged. What this
+/// chapter changes is how each ray finds its hit ([`render_tree`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ManySpheres {
+    pub like: Like,
+}
+
+impl Step for ManySpheres {
+    fn shade(&self, ray: &Ray, hit: &Hit, surface: &mut Surface) -> Vec3 {
+        match self.like {
+            Like::RayCast => RayCast.shade(ray, hit, surface),
+            Like::Shadows => Shadows.shade(ray, hit, surface),
+            Like::Reflection => Reflection.shade(ray, hit, surface),
+            Like::Refraction | Like::AntiAliasing => Refraction.shade(ray, hit, surface),
+        }
+    }
+
+    fn lab_five(&self) -> [(f32, f32); 5] {
+        match self.like {
+            Like::AntiAliasing => AntiAliasing.lab_five(),
+            _ => raylab::sampling::LAB_FIVE,
+        }
+    }
+}
+
+// ANCHOR: render
+/// The core's render, with every ray's hit found through a tree built
+/// over the scene's spheres first (the build is part of the time).
+pub fn render_tree(
+    scene: &Scene,
+    camera: &Camera,
+    step: &ManySpheres,
+    settings: &Settings,
+    keep: Keep,
+    progress: &dyn Progress,
+) -> Rendered {
+    let tree = Bvh::build(scene);
+    render_with_query(scene, &tree, camera, step, settings, keep, progress)
+}
+// ANCHOR_END: render
+
+/// Chapter 9's program, tracing as the chapter `like` does, with its
+/// defaults (chapter 5's when `--like` is not given).
+pub fn chapter(like: Like) -> Chapter<ManySpheres> {
+    let (max_depth, spp, probe) = like.defaults();
+    Chapter {
+        binary: BINARY,
+        about: "Chapter 9, many spheres: every ray's hit found through a bounding volume hierarchy, \
+                to the same bytes as testing every sphere. --like ch01-ray-cast … ch05-antialiasing \
+                traces as that chapter does (default: ch05-antialiasing); --generate-field N \
+                [--seed S] prints a scene file of N random spheres.",
+        max_depth,
+        spp,
+        probe,
+        step: ManySpheres { like },
+        render: render_tree,
+    }
+}
