@@ -9,5 +9,5 @@ pub use ch07_eight_rays::like::Like;
 /// when absent. The rest go to the shared command line.
 pub fn take_like(args: Vec<OsString>) -> Result<(Like, Vec<OsString>), String> {
     ch07_eight_rays::like::take_like(args)
-        .map_err(|message| message.replace("chapter chapter 7 can", "chapter chapter 9 can"))
+        .map_err(|message| message.replace("that chapter 7 can", "that chapter 9 can"))
 }

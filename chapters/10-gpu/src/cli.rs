@@ -16,7 +16,7 @@ use crate::shader::{self, Source};
 
 /// The program's name and defaults when it traces as `like`.
 pub fn program(like: Like) -> Program {
-    let (max_depth, spp) = like.defaults();
+    let (max_depth, spp, _) = like.defaults();
     Program {
         binary: BINARY,
         about: "Chapter 10, the lab as it ran: the tracer as a WGSL compute shader, one invocation \

@@ -1,129 +1,30 @@
-//! `--like chNN-…`: which of chapters 1–5 the shader traces as.
+//! `--like chNN-…`: which of chapters 1–5 the shader traces as: chapter
+//! 7's [`Like`], which imitates the same chapters on the CPU, with this
+//! chapter's name in its messages.
 //!
 //! The shader holds every feature of chapters 1–5; three bits of its
 //! uniforms switch them on (`features` in `tracer.wgsl`). With `--like
 //! ch03-reflection` it has chapter 3's features (shadows and mirrors, no
-//! glass) and its defaults (depth 10, one ray per pixel). This mirrors
-//! chapter 7's `--like`, which imitates the same chapters on the CPU.
+//! glass) and its defaults (depth 10, one ray per pixel).
 
 use std::ffi::OsString;
 
-/// One of the Whitted chapters, as chapter 10 imitates it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Like {
-    RayCast,
-    Shadows,
-    Reflection,
-    Refraction,
-    AntiAliasing,
+pub use ch07_eight_rays::like::{Features, Like};
+
+/// The shader's `params.features`: bit 0 shadows, bit 1 reflection, bit 2
+/// transmission.
+pub fn feature_bits(features: Features) -> u32 {
+    u32::from(features.shadows)
+        | u32::from(features.reflection) << 1
+        | u32::from(features.transmission) << 2
 }
 
-/// What a chapter has switched on (LAB.md's chapter table).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Features {
-    pub shadows: bool,
-    pub reflection: bool,
-    pub transmission: bool,
-}
-
-impl Features {
-    /// The shader's `params.features`: bit 0 shadows, bit 1 reflection,
-    /// bit 2 transmission.
-    pub fn bits(self) -> u32 {
-        u32::from(self.shadows)
-            | u32::from(self.reflection) << 1
-            | u32::from(self.transmission) << 2
-    }
-}
-
-impl Like {
-    pub const ALL: [Like; 5] = [
-        Like::RayCast,
-        Like::Shadows,
-        Like::Reflection,
-        Like::Refraction,
-        Like::AntiAliasing,
-    ];
-
-    /// The program this imitates, e.g. `ch04-refraction`.
-    pub fn binary(self) -> &'static str {
-        match self {
-            Like::RayCast => ch01_ray_cast::CHAPTER.binary,
-            Like::Shadows => ch02_shadows::CHAPTER.binary,
-            Like::Reflection => ch03_reflection::CHAPTER.binary,
-            Like::Refraction => ch04_refraction::CHAPTER.binary,
-            Like::AntiAliasing => ch05_antialiasing::CHAPTER.binary,
-        }
-    }
-
-    pub fn features(self) -> Features {
-        let on = |first: Like| self as usize >= first as usize;
-        Features {
-            shadows: on(Like::Shadows),
-            reflection: on(Like::Reflection),
-            transmission: on(Like::Refraction),
-        }
-    }
-
-    /// The chapter's default `--max-depth` and `--spp`.
-    pub fn defaults(self) -> (u32, u32) {
-        macro_rules! of {
-            ($chapter:expr) => {
-                ($chapter.max_depth, $chapter.spp)
-            };
-        }
-        match self {
-            Like::RayCast => of!(ch01_ray_cast::CHAPTER),
-            Like::Shadows => of!(ch02_shadows::CHAPTER),
-            Like::Reflection => of!(ch03_reflection::CHAPTER),
-            Like::Refraction => of!(ch04_refraction::CHAPTER),
-            Like::AntiAliasing => of!(ch05_antialiasing::CHAPTER),
-        }
-    }
-
-    /// `ch04-refraction`, or just `ch04`.
-    pub fn parse(text: &str) -> Result<Like, String> {
-        Like::ALL
-            .into_iter()
-            .find(|like| like.binary() == text || like.binary().split('-').next() == Some(text))
-            .ok_or_else(|| {
-                let names: Vec<_> = Like::ALL.iter().map(|l| l.binary()).collect();
-                format!(
-                    "--like '{text}' is not a chapter chapter 10 can imitate: use one of {}",
-                    names.join(", ")
-                )
-            })
-    }
-}
-
-/// Take `--like NAME` (or `--like=NAME`) out of a program's arguments and
-/// return the rest for the shared command line. Chapter 5 when absent.
-///
-/// It is read before the rest because it decides the defaults the rest
-/// are parsed with (`--max-depth`, `--spp`).
+/// Take `--like NAME` (or `--like=NAME`) out of the arguments; chapter 5
+/// when absent. It is read before the rest because it decides the
+/// defaults the rest are parsed with (`--max-depth`, `--spp`).
 pub fn take_like(args: Vec<OsString>) -> Result<(Like, Vec<OsString>), String> {
-    let mut like = None;
-    let mut rest = Vec::with_capacity(args.len());
-    let mut args = args.into_iter();
-    while let Some(arg) = args.next() {
-        let text = arg.to_string_lossy();
-        let value = if text == "--like" {
-            let value = args
-                .next()
-                .ok_or("--like needs a chapter, e.g. --like ch04-refraction")?;
-            value.to_string_lossy().into_owned()
-        } else if let Some(value) = text.strip_prefix("--like=") {
-            value.to_owned()
-        } else {
-            rest.push(arg);
-            continue;
-        };
-        if like.is_some() {
-            return Err("--like was given twice: give it once".into());
-        }
-        like = Some(Like::parse(&value)?);
-    }
-    Ok((like.unwrap_or(Like::AntiAliasing), rest))
+    ch07_eight_rays::like::take_like(args)
+        .map_err(|message| message.replace("that chapter 7 can", "that chapter 10 can"))
 }
 
 #[cfg(test)]
@@ -136,11 +37,11 @@ mod tests {
 
     #[test]
     fn each_chapter_switches_on_one_more_feature_bit() {
-        let bits: Vec<u32> = Like::ALL.iter().map(|l| l.features().bits()).collect();
+        let bits: Vec<u32> = Like::ALL
+            .iter()
+            .map(|l| feature_bits(l.features()))
+            .collect();
         assert_eq!(bits, [0b000, 0b001, 0b011, 0b111, 0b111]);
-        assert_eq!(Like::Reflection.defaults(), (10, 1));
-        assert_eq!(Like::AntiAliasing.defaults(), (10, 5));
-        assert_eq!(Like::RayCast.defaults(), (1, 1));
     }
 
     #[test]
@@ -155,9 +56,10 @@ mod tests {
     }
 
     #[test]
-    fn an_unknown_or_missing_chapter_is_one_clear_line() {
+    fn an_unknown_or_missing_chapter_is_one_clear_line_that_names_this_chapter() {
         let err = take_like(args(&["ch10", "--like", "ch06"])).unwrap_err();
         assert!(err.contains("use one of ch01-ray-cast"), "{err}");
+        assert!(err.contains("chapter 10"), "{err}");
         assert!(take_like(args(&["ch10", "--like"])).is_err());
         assert!(take_like(args(&["ch10", "--like=ch01", "--like=ch02"])).is_err());
     }

@@ -100,7 +100,9 @@ pub fn pack(
     let spheres = scene.spheres();
     let count = u32::try_from(spheres.len()).unwrap_or(u32::MAX);
     params.vec3(scene.ground.plane.point).u32(count);
-    params.vec3(scene.ground.plane.normal).u32(features.bits());
+    params
+        .vec3(scene.ground.plane.normal)
+        .u32(crate::like::feature_bits(features));
     // The whole image as one band; `Inputs::band` sets another.
     params.vec3(scene.ground.checker.even).u32(0);
     params.vec3(scene.ground.checker.odd).u32(settings.height);

@@ -31,7 +31,7 @@ fn gpu() -> Option<Gpu> {
 
 /// A chapter's settings at 320 × 240, with its default depth and samples.
 fn settings(like: Like) -> Settings {
-    let (max_depth, spp) = like.defaults();
+    let (max_depth, spp, _) = like.defaults();
     Settings {
         width: 320,
         height: 240,
