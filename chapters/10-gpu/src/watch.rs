@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc;
-use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
+use std::time::{Duration, Instant};
 
 use notify::{RecursiveMode, Watcher};
 use raylab::{Camera, Scene};
@@ -165,22 +165,12 @@ fn render_and_print(
 ) -> Result<(), Error> {
     let report = run::render(gpu, tracer, like, options, scene)?;
     if !options.quiet {
-        println!("[{}] rendered with {}", clock(), tracer.name);
+        println!(
+            "[{}] rendered with {}",
+            raylab_cli::watch::clock(),
+            tracer.name
+        );
         print!("{}", run::report_text(&report, tracer, gpu));
     }
     Ok(())
-}
-
-/// The time of day, UTC, as HH:MM:SS.
-fn clock() -> String {
-    let seconds = SystemTime::now()
-        .duration_since(UNIX_EPOCH)
-        .map_or(0, |d| d.as_secs())
-        % 86_400;
-    format!(
-        "{:02}:{:02}:{:02} UTC",
-        seconds / 3600,
-        seconds / 60 % 60,
-        seconds % 60
-    )
 }

@@ -99,8 +99,8 @@ fn folder_and_name(scene: &Path) -> Result<(PathBuf, std::ffi::OsString), CliErr
         .ok_or_else(|| CliError::Watch(format!("'{}' is not a file", scene.display())))
 }
 
-/// The time of day, UTC, as HH:MM:SS.
-fn clock() -> String {
+/// The time of day, UTC, as HH:MM:SS: when a watched render was made.
+pub fn clock() -> String {
     let seconds = SystemTime::now()
         .duration_since(UNIX_EPOCH)
         .map_or(0, |d| d.as_secs())
