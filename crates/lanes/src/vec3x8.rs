@@ -138,7 +138,7 @@ pub fn negate(x: f32x8) -> f32x8 {
 ///
 /// `old` is read through `black_box`. Without it, LLVM may turn a blend of
 /// a value loaded from memory and stored back to the same place into one
-/// masked store (`vmaskmovps`), which some processors (AMD's Zen 1–3) run
+/// masked store (`vmaskmovps`), which some processors run
 /// in microcode, many times slower than a blend and a store. The lanes
 /// chosen are the same either way. Where no lane needs its old value, a
 /// whole store needs no blend at all, and where a count grows, a sum
