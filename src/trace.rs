@@ -302,10 +302,7 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
     // ANCHOR: trace
     /// The colour seen along a primary ray: LAB.md's ray-stack loop.
     pub fn trace(&mut self, primary: Ray) -> Traced {
-        let mut traced = Traced::default();
-        if let Some(by_depth) = &mut self.by_depth {
-            by_depth.fill(Vec3::ZERO);
-        }
+        let mut traced = self.start();
         self.stack.push(PendingRay {
             ray: primary,
             kind: RayKind::Primary,
@@ -314,10 +311,7 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
             parent: None,
         });
         while let Some(pending) = self.stack.pop() {
-            self.counts.add(pending.kind, 1);
-            traced.rays += 1;
-            traced.deepest = traced.deepest.max(pending.depth);
-
+            self.count(&mut traced, &pending);
             let Some(hit) = self.objects.nearest_hit(&pending.ray) else {
                 // Nothing in the way: the ray sees the sky.
                 let sky = pending.weight * self.scene.sky.radiance(pending.ray.direction);
@@ -329,10 +323,7 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
             let local = self.step.shade(&pending.ray, &hit, &mut self.surface);
             let added = pending.weight * self.surface.kept() * local;
             let me = self.add(&mut traced, &pending, Some(&hit), added);
-
-            self.counts
-                .add(RayKind::Shadow, u64::from(self.surface.shadow_rays));
-            traced.rays += self.surface.shadow_rays;
+            self.count_shadow_rays(&mut traced);
 
             if pending.depth < self.max_depth && self.surface.sent_len > 0 {
                 if traced.rays >= RAY_BUDGET {
@@ -353,6 +344,28 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
         traced
     }
     // ANCHOR_END: trace
+
+    /// A new pixel's tally, with the per-depth colours (if kept) cleared.
+    fn start(&mut self) -> Traced {
+        if let Some(by_depth) = &mut self.by_depth {
+            by_depth.fill(Vec3::ZERO);
+        }
+        Traced::default()
+    }
+
+    /// Count a ray taken off the stack, and how deep the tree has gone.
+    fn count(&mut self, traced: &mut Traced, pending: &PendingRay) {
+        self.counts.add(pending.kind, 1);
+        traced.rays += 1;
+        traced.deepest = traced.deepest.max(pending.depth);
+    }
+
+    /// Count the feelers the step just cast.
+    fn count_shadow_rays(&mut self, traced: &mut Traced) {
+        self.counts
+            .add(RayKind::Shadow, u64::from(self.surface.shadow_rays));
+        traced.rays += self.surface.shadow_rays;
+    }
 
     /// Add a ray's contribution to the pixel, and to the probe's log and
     /// the per-depth colours when those are kept. Returns the ray's index
