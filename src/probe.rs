@@ -1,21 +1,43 @@
 //! Following one pixel's rays: the ray tree behind a single colour.
 
+use crate::Vec3;
 use crate::camera::Camera;
 use crate::frame::Settings;
 use crate::scene::Scene;
 use crate::trace::{Step, TracedRay, Tracer};
 
-/// Which pixel a chapter probes when `--probe` is not given.
+/// Which pixel a chapter probes when `--probe` is not given: a pixel
+/// chosen to show the chapter's new rays, so not always a centre (the
+/// mirror's centre reflects straight back along the primary ray; a
+/// feeler from right under a ball is too short to see).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ProbeTarget {
-    /// The pixel where the centre of the named sphere is seen.
-    SphereCentre(&'static str),
+    /// The pixel where the named sphere is seen `right` and `up` of its
+    /// centre, in radii along the camera's right and up directions:
+    /// `(0, 0)` is the centre, and a point at distance 1 is on its outline
+    /// (near enough: perspective makes the outline a little larger).
+    OnSphere {
+        name: &'static str,
+        right: f32,
+        up: f32,
+    },
     /// A ground pixel in the shadow of the named sphere: the point whose
-    /// line towards the sun passes through the sphere's centre.
-    ShadowOf(&'static str),
+    /// line towards the sun passes `above` radii above the sphere's
+    /// centre. The higher the line crosses the ball, the longer the
+    /// feeler from the ground to it.
+    ShadowOf { name: &'static str, above: f32 },
 }
 
 impl ProbeTarget {
+    /// The pixel where the centre of the named sphere is seen.
+    pub const fn centre_of(name: &'static str) -> ProbeTarget {
+        ProbeTarget::OnSphere {
+            name,
+            right: 0.0,
+            up: 0.0,
+        }
+    }
+
     /// The pixel `(x, y)` this target is seen at in a `width` × `height`
     /// image, if it is on screen.
     pub fn pixel(
@@ -26,13 +48,15 @@ impl ProbeTarget {
         height: u32,
     ) -> Option<(u32, u32)> {
         let point = match *self {
-            ProbeTarget::SphereCentre(name) => {
-                scene.spheres()[scene.sphere_named(name)?].shape.centre
+            ProbeTarget::OnSphere { name, right, up } => {
+                let sphere = scene.spheres()[scene.sphere_named(name)?].shape;
+                sphere.centre + (camera.right() * right + camera.up() * up) * sphere.radius
             }
-            ProbeTarget::ShadowOf(name) => {
-                let centre = scene.spheres()[scene.sphere_named(name)?].shape.centre;
+            ProbeTarget::ShadowOf { name, above } => {
+                let sphere = scene.spheres()[scene.sphere_named(name)?].shape;
+                let crossing = sphere.centre + Vec3::Y * (above * sphere.radius);
                 let to_sun = scene.sun.direction;
-                centre - to_sun * (centre.y / to_sun.y)
+                crossing - to_sun * (crossing.y / to_sun.y)
             }
         };
         let (x, y) = camera.project(point, width, height)?;
@@ -72,4 +96,50 @@ pub fn probe<S: Step + ?Sized>(
             }
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn lab_pixel(target: ProbeTarget) -> Option<(u32, u32)> {
+        target.pixel(&Scene::lab(), &Camera::lab(), 800, 600)
+    }
+
+    #[test]
+    fn the_red_balls_centre_is_seen_in_the_middle_column() {
+        // The red ball's centre (0, 1, -1.5) is straight ahead in x: column
+        // 400 exactly. It is 0.2404 of the half-height up from the middle
+        // row: (1 - 0.2404) · 300 = 227.9, so row 227.
+        assert_eq!(lab_pixel(ProbeTarget::centre_of("red")), Some((400, 227)));
+    }
+
+    #[test]
+    fn a_point_off_a_spheres_centre_is_seen_to_the_right_and_above() {
+        // The glass ball's centre is seen at (593.3, 320.4); half a radius
+        // right and 0.3 of one up moves it 58 columns right, 35 rows up.
+        let target = ProbeTarget::OnSphere {
+            name: "glass",
+            right: 0.5,
+            up: 0.3,
+        };
+        assert_eq!(lab_pixel(target), Some((651, 285)));
+    }
+
+    #[test]
+    fn a_shadow_target_is_the_ground_point_whose_feeler_crosses_the_ball() {
+        // The line towards the sun through (-2, 1.425, -1.2), 0.9 radii
+        // above the yellow ball's centre, meets the ground 1.425 / 0.6838
+        // units further on, at (-0.8125, 0, -2.15): seen at (312.8, 333.3).
+        let target = ProbeTarget::ShadowOf {
+            name: "yellow",
+            above: 0.9,
+        };
+        assert_eq!(lab_pixel(target), Some((312, 333)));
+    }
+
+    #[test]
+    fn a_target_on_a_sphere_the_scene_does_not_have_is_not_probed() {
+        assert_eq!(lab_pixel(ProbeTarget::centre_of("green")), None);
+    }
 }

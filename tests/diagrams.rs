@@ -43,9 +43,10 @@ fn every_chapter_writes_its_diagrams_as_valid_pngs_of_the_documented_size() {
             assert_eq!(png_size(&sweep.join("changes.png")), (900, 500));
             png_size(&sweep.join("montage.png"));
             let settles = report.sweep.as_ref().unwrap().0.settles_at();
+            // The picture, with its scale of changes under it.
             assert_eq!(
                 png_size(&sweep.join(format!("diff-1-vs-{settles}.png"))),
-                (80, 60)
+                (80, 60 + raylab_plot::diff::SCALE_STRIP)
             );
             the_sentence_agrees_with_the_csv(&sweep);
         }

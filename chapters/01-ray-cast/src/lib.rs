@@ -55,7 +55,7 @@ pub const CHAPTER: Chapter<RayCast> = Chapter {
     about: "Chapter 1, ray casting: one ray per pixel, shaded by the sun and the sky.",
     max_depth: 1,
     spp: 1,
-    probe: ProbeTarget::SphereCentre("red"),
+    probe: ProbeTarget::centre_of("red"),
     step: RayCast,
     render: raylab::render,
 };

@@ -53,7 +53,14 @@ pub const CHAPTER: Chapter<Shadows> = Chapter {
     about: "Chapter 2, shadow rays: a feeler ray towards the sun decides whether a point is lit.",
     max_depth: 1,
     spp: 1,
-    probe: ProbeTarget::ShadowOf("blue"),
+    // A ground point in the yellow ball's shadow, where the line towards
+    // the sun crosses the ball high up: the feeler is about a unit long,
+    // long enough to see in the ray tree (right under a ball it is a few
+    // hundredths).
+    probe: ProbeTarget::ShadowOf {
+        name: "yellow",
+        above: 0.9,
+    },
     step: Shadows,
     render: raylab::render,
 };

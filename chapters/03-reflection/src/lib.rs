@@ -46,7 +46,14 @@ pub const CHAPTER: Chapter<Reflection> = Chapter {
     about: "Chapter 3, reflection: mirrors send rays on through a ray stack, up to --max-depth.",
     max_depth: 10,
     spp: 1,
-    probe: ProbeTarget::SphereCentre("mirror"),
+    // Near the mirror's right edge, where it reflects the red ball: the
+    // reflected ray turns well away from the primary ray (at the centre it
+    // would go straight back along it).
+    probe: ProbeTarget::OnSphere {
+        name: "mirror",
+        right: 0.85,
+        up: 0.4,
+    },
     step: Reflection,
     render: raylab::render,
 };

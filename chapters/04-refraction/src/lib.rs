@@ -72,7 +72,14 @@ pub const CHAPTER: Chapter<Refraction> = Chapter {
     about: "Chapter 4, refraction: glass bends rays by Snell's law, or reflects them all inside.",
     max_depth: 10,
     spp: 1,
-    probe: ProbeTarget::SphereCentre("glass"),
+    // Off the glass ball's centre, about 60 % of the way to its outline,
+    // where the refracted rays visibly bend (through the centre they run
+    // straight).
+    probe: ProbeTarget::OnSphere {
+        name: "glass",
+        right: 0.5,
+        up: 0.3,
+    },
     step: Refraction,
     render: raylab::render,
 };

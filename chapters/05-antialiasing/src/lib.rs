@@ -55,7 +55,12 @@ pub const CHAPTER: Chapter<AntiAliasing> = Chapter {
     about: "Chapter 5, anti-aliasing: five rays per pixel, averaged in linear light.",
     max_depth: 10,
     spp: 5,
-    probe: ProbeTarget::SphereCentre("glass"),
+    // Chapter 4's pixel, off the glass ball's centre, now with five trees.
+    probe: ProbeTarget::OnSphere {
+        name: "glass",
+        right: 0.5,
+        up: 0.3,
+    },
     step: AntiAliasing,
     render: raylab::render,
 };

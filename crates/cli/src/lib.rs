@@ -487,19 +487,31 @@ fn write_probe<S: Step>(
             chapter.binary
         ),
     };
-    let rays: Vec<_> = trees[..drawn]
-        .iter()
-        .flat_map(|t| t.rays.iter().copied())
-        .collect();
-    let figure = ray_tree::ray_tree_figure(scene, camera, &title, pixel, &rays);
-    let path = report.out_dir.join("ray-tree.png");
-    save_png(&figure, &path)?;
-    report.written.push(path);
     let listing = if options.ray_tree.probe_full {
         Listing::Full
     } else {
         Listing::Folded
     };
+    // The figure draws the rays the text lists: past the first few
+    // bounces inside the glass, dozens of rays that cannot change the
+    // pixel would bury the ones that do.
+    let fold_below = probe_text::fold_below(listing, trees.len());
+    let mut rays = Vec::new();
+    let mut left_out = 0;
+    for tree in &trees[..drawn] {
+        let folding = probe_text::Folding::of(&tree.rays, fold_below);
+        for (i, ray) in tree.rays.iter().enumerate() {
+            if folding.listed(i) {
+                rays.push(*ray);
+            } else {
+                left_out += 1;
+            }
+        }
+    }
+    let figure = ray_tree::ray_tree_figure(scene, camera, &title, pixel, &rays, left_out);
+    let path = report.out_dir.join("ray-tree.png");
+    save_png(&figure, &path)?;
+    report.written.push(path);
     let text = probe_text::format_tree(scene, pixel, &trees, listing);
     let path = report.out_dir.join("probe.txt");
     save_text(&text, &path)?;

@@ -65,12 +65,7 @@ pub fn format_tree(
                 tree.offset.1
             );
         }
-        // What a sample adds reaches the pixel divided by the sample count.
-        let fold_below = match listing {
-            Listing::Folded => INVISIBLE * samples as f32,
-            Listing::Full => 0.0,
-        };
-        format_rays(&mut out, scene, &tree.rays, fold_below);
+        format_rays(&mut out, scene, &tree.rays, fold_below(listing, samples));
     }
     if shown < trees.len() {
         let rest = trees.len() - shown;
@@ -115,22 +110,53 @@ fn subtrees(log: &[TracedRay]) -> Vec<Subtree> {
     totals
 }
 
+/// How much light a subtree must add to be listed: what a sample adds
+/// reaches the pixel divided by the sample count.
+pub fn fold_below(listing: Listing, samples: usize) -> f32 {
+    match listing {
+        Listing::Folded => INVISIBLE * samples as f32,
+        Listing::Full => 0.0,
+    }
+}
+
+/// How one tree is listed: each ray is listed in full, folded (one line
+/// for it and everything below it), or hidden under a folded ray.
+pub struct Folding {
+    pub folded: Vec<bool>,
+    pub hidden: Vec<bool>,
+}
+
+impl Folding {
+    /// A ray is folded when it has rays below it and all of them together
+    /// add less than `fold_below`; the rays under a folded one are hidden.
+    pub fn of(log: &[TracedRay], fold_below: f32) -> Folding {
+        let totals = subtrees(log);
+        let folded: Vec<bool> = log
+            .iter()
+            .zip(&totals)
+            .map(|(ray, sub)| {
+                ray.parent.is_some() && sub.rays > 1 && sub.added.max_element() < fold_below
+            })
+            .collect();
+        let mut hidden = vec![false; log.len()];
+        for (i, ray) in log.iter().enumerate() {
+            if let Some(parent) = ray.parent {
+                hidden[i] = hidden[parent] || folded[parent];
+            }
+        }
+        Folding { folded, hidden }
+    }
+
+    /// Whether ray `i` is listed in full: neither folded nor under a fold.
+    pub fn listed(&self, i: usize) -> bool {
+        !self.folded[i] && !self.hidden[i]
+    }
+}
+
 fn format_rays(out: &mut String, scene: &Scene, log: &[TracedRay], fold_below: f32) {
     let totals = subtrees(log);
-    // A ray is folded when it has rays below it and all of them together
-    // add less than `fold_below`; the rays under a folded one are hidden.
-    let folded: Vec<bool> = log
-        .iter()
-        .zip(&totals)
-        .map(|(ray, sub)| {
-            ray.parent.is_some() && sub.rays > 1 && sub.added.max_element() < fold_below
-        })
-        .collect();
-    let mut hidden = vec![false; log.len()];
+    let Folding { folded, hidden } = Folding::of(log, fold_below);
     for (i, ray) in log.iter().enumerate() {
-        if let Some(parent) = ray.parent {
-            hidden[i] = hidden[parent] || folded[parent];
-        }
         if hidden[i] {
             continue;
         }

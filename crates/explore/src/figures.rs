@@ -17,7 +17,7 @@ const HEIGHT: u32 = 480;
 /// The glass ball's centre pixel in the lab camera, for the probes.
 fn glass_pixel() -> (u32, u32) {
     let lab = Loaded::lab();
-    ProbeTarget::SphereCentre("glass")
+    ProbeTarget::centre_of("glass")
         .pixel(&lab.scene, &lab.camera, WIDTH, HEIGHT)
         .unwrap_or((WIDTH / 2, HEIGHT / 2))
 }

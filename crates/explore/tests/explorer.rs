@@ -204,7 +204,7 @@ fn path_tracing_stops_at_the_paths_per_pixel_asked_for() {
 }
 
 fn glass_pixel() -> (u32, u32) {
-    ProbeTarget::SphereCentre("glass")
+    ProbeTarget::centre_of("glass")
         .pixel(&Scene::lab(), &Camera::lab(), W, H)
         .unwrap()
 }

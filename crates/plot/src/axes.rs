@@ -260,7 +260,11 @@ impl LinePlot {
 
         let y_scale = self.y_scale();
         // Labels are one line tall, so a fixed spacing suffices vertically.
-        let y_ticks = y_scale.ticks(bottom - top, 42.0, false);
+        let mut y_ticks = y_scale.ticks(bottom - top, 42.0, false);
+        if let Some(zero) = self.zero_row() {
+            y_ticks.values.insert(0, zero);
+            y_ticks.labels.insert(0, "0".to_owned());
+        }
         let widest_y_label = y_ticks
             .labels
             .iter()
@@ -329,7 +333,7 @@ impl LinePlot {
                     .map(|(min, max)| (min.max(floor), max.max(floor)))
                     .unwrap_or_else(|| decade_range(ys, floor));
                 Scale {
-                    min,
+                    min: self.zero_row().unwrap_or(min),
                     max: if max > min { max } else { min * 10.0 },
                     log: true,
                 }
@@ -337,13 +341,27 @@ impl LinePlot {
         }
     }
 
-    /// On a log axis, values below the floor move up to it.
+    /// On a log axis, values below the floor move up to it, and zeros (and
+    /// anything below) go to a row of their own under it.
     fn clamp_y(&self, y: f64) -> f64 {
         match self.log_y_floor {
-            // NaN fails the comparison and stays NaN, so it still breaks the line.
+            // NaN fails the comparisons and stays NaN, so it still breaks the line.
+            Some(_) if y <= 0.0 => self.zero_row().unwrap_or(y),
             Some(floor) if y < floor => floor,
             _ => y,
         }
+    }
+
+    /// Where a log axis draws zero: half a decade under its floor, with a
+    /// tick of its own, so that "nothing" never looks like "one".
+    fn zero_row(&self) -> Option<f64> {
+        let floor = self.log_y_floor?;
+        let any_zero = self
+            .series
+            .iter()
+            .flat_map(|s| s.points.iter())
+            .any(|p| p.1 <= 0.0);
+        any_zero.then(|| floor / 10f64.sqrt())
     }
 
     /// The y label, plus a note on log scaling and on any clamped values.
@@ -355,12 +373,10 @@ impl LinePlot {
             .series
             .iter()
             .flat_map(|s| s.points.iter().map(|p| p.1))
-            .filter(|&y| y < floor)
+            .filter(|&y| y > 0.0 && y < floor)
             .collect();
         let note = if clamped.is_empty() {
             "log scale".to_string()
-        } else if clamped.iter().all(|&y| y <= 0.0) {
-            format!("log scale; 0 shown as {floor}")
         } else {
             format!("log scale; values below {floor} shown as {floor}")
         };
@@ -764,21 +780,32 @@ mod tests {
     }
 
     #[test]
-    fn log_axis_ticks_at_powers_of_ten_and_says_how_zero_is_shown() {
-        let points = [(1.0, 5000.0), (2.0, 300.0), (3.0, 12.0), (4.0, 0.0)];
+    fn a_log_axis_draws_zero_on_a_row_of_its_own_below_one() {
+        let points = [(1.0, 5000.0), (2.0, 300.0), (3.0, 1.0), (4.0, 0.0)];
         let plot = LinePlot::new("")
             .y_label("changed pixels")
             .log_y(1.0)
             .series(Series::new("", BLUE, points));
         let layout = plot.layout(800, 500);
-        assert_eq!(layout.y_ticks.labels, ["1", "10", "100", "1000", "10000"]);
         assert_eq!(
-            plot.y_label_text(),
-            "changed pixels (log scale; 0 shown as 1)"
+            layout.y_ticks.labels,
+            ["0", "1", "10", "100", "1000", "10000"]
         );
-        // The zero is drawn on the floor, i.e. the bottom of the frame.
-        let (_, y) = plot.data_to_pixel(800, 500, 4.0, 0.0);
-        assert_eq!(y, layout.frame.bottom);
+        assert_eq!(plot.y_label_text(), "changed pixels (log scale)");
+        // Zero sits on the frame's bottom, one apart from it, higher up.
+        let (_, zero) = plot.data_to_pixel(800, 500, 4.0, 0.0);
+        let (_, one) = plot.data_to_pixel(800, 500, 3.0, 1.0);
+        assert_eq!(zero, layout.frame.bottom);
+        assert!(zero - one > 20.0, "0 at {zero} and 1 at {one} look alike");
+        // A value between zero and the floor is still drawn on the floor.
+        let small = LinePlot::new("")
+            .y_label("changed pixels")
+            .log_y(1.0)
+            .series(Series::new("", BLUE, [(1.0, 100.0), (2.0, 0.5)]));
+        assert_eq!(
+            small.y_label_text(),
+            "changed pixels (log scale; values below 1 shown as 1)"
+        );
         // A plot with nothing clamped just says "log scale".
         let plain = LinePlot::new("").y_label("time").log_y(0.1);
         assert_eq!(plain.y_label_text(), "time (log scale)");

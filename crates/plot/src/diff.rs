@@ -6,8 +6,11 @@
 
 use image::RgbImage;
 
+use super::canvas::Canvas;
 use super::colormap::magma;
-use super::colour::BLACK;
+use super::colour::{AXIS, BLACK, TEXT, WHITE};
+use super::text::Anchor;
+use super::ticks::linear_ticks;
 
 /// An image of where `a` and `b` differ: each pixel's change (0..=255)
 /// times `gain`, shown through magma so that small changes glow dim purple
@@ -31,6 +34,51 @@ pub fn magnified_difference(a: &RgbImage, b: &RgbImage, gain: f32) -> RgbImage {
         };
         image::Rgb(colour)
     })
+}
+
+/// The height of the strip [`with_change_scale`] adds under an image.
+pub const SCALE_STRIP: u32 = 58;
+
+/// A [`magnified_difference`] image with its scale under it: the magma bar
+/// from no change to the change that reaches the top of the colormap
+/// (255 / `gain` levels), labelled in 8-bit levels, so that a reader can
+/// tell how large a colour's change is.
+pub fn with_change_scale(difference: &RgbImage, gain: f32) -> RgbImage {
+    let (width, height) = difference.dimensions();
+    let mut canvas = Canvas::new(width, height + SCALE_STRIP, WHITE);
+    canvas.draw_rgb_image(difference, 0, 0, 1);
+    let full = 255.0 / gain.max(1.0);
+    let (x0, x1) = (40.0, (width as f32 - 40.0).max(41.0));
+    let top = height as f32 + 8.0;
+    let bar = 10.0;
+    let steps = (x1 - x0).ceil() as u32;
+    for i in 0..steps {
+        let t = i as f32 / (steps - 1).max(1) as f32;
+        canvas.fill_rect(x0 + i as f32, top, 1.0, bar, magma(t));
+    }
+    canvas.stroke_rect(x0, top, x1 - x0, bar, AXIS, 1.0);
+    let ticks = linear_ticks(0.0, f64::from(full), 6);
+    for (value, label) in ticks.values.iter().zip(&ticks.labels) {
+        let x = x0 + (x1 - x0) * (*value as f32 / full);
+        canvas.stroke_line(x, top + bar, x, top + bar + 4.0, AXIS, 1.0);
+        canvas.text(x, top + bar + 5.0, label, 11.0, TEXT, Anchor::TOP_CENTRE);
+    }
+    let note = if gain > 1.0 {
+        format!(
+            "change in 8-bit levels, largest channel; black: unchanged; {full:.0} and more: top of the scale"
+        )
+    } else {
+        "change in 8-bit levels, largest channel; black: unchanged".to_owned()
+    };
+    canvas.text(
+        width as f32 / 2.0,
+        top + bar + 22.0,
+        &note,
+        12.0,
+        TEXT,
+        Anchor::TOP_CENTRE,
+    );
+    canvas.to_rgb_image()
 }
 
 /// How many pixels changed by more than `threshold` levels (0..=255) in
@@ -81,6 +129,19 @@ mod tests {
         RgbImage::from_fn(16, 8, |x, y| {
             image::Rgb([(x * 16) as u8, (y * 30) as u8, 77])
         })
+    }
+
+    #[test]
+    fn a_difference_image_gains_a_scale_strip_and_keeps_its_pixels() {
+        let a = gradient();
+        let mut b = a.clone();
+        b.get_pixel_mut(3, 2).0[2] = 77 + 40;
+        let diff = magnified_difference(&a, &b, 4.0);
+        let scaled = with_change_scale(&diff, 4.0);
+        assert_eq!(scaled.dimensions(), (16, 8 + SCALE_STRIP));
+        for (x, y, pixel) in diff.enumerate_pixels() {
+            assert_eq!(scaled.get_pixel(x, y), pixel);
+        }
     }
 
     #[test]

@@ -51,7 +51,7 @@ pub use axes::{Corner, LinePlot, Series};
 pub use canvas::Canvas;
 pub use colormap::{Colormap, magma, viridis};
 pub use colour::Rgb;
-pub use diff::{changed_pixels, magnified_difference, max_change};
+pub use diff::{changed_pixels, magnified_difference, max_change, with_change_scale};
 pub use heatmap::{ColourScale, HeatmapFigure, heatmap_figure, heatmap_image};
 pub use montage::montage;
 pub use text::{Anchor, HAlign, VAlign};

@@ -105,11 +105,49 @@ pub fn make_scene_figures(dir: &Path, scenes: &Path, size: Size) -> Result<Vec<P
             &NoProgress,
         )
         .srgb;
+        let image = label_clear_spheres(&image, &scene, &camera);
         let path = dir.join(name);
         save_png(&image, &path)?;
         written.push(path);
     }
     Ok(written)
+}
+
+/// The picture with a strip under it that names each clear ball in view
+/// and its index of refraction, under the ball's centre: water and glass
+/// look alike until the reader knows which is which. A picture with no
+/// clear ball in view comes back as it was.
+fn label_clear_spheres(image: &RgbImage, scene: &Scene, camera: &Camera) -> RgbImage {
+    let (width, height) = image.dimensions();
+    let labels: Vec<(f32, String)> = scene
+        .spheres()
+        .iter()
+        .filter(|sphere| sphere.material.transmission() > 0.0)
+        .filter_map(|sphere| {
+            let (x, _) = camera.project(sphere.shape.centre, width, height)?;
+            let ior = sphere.material.ior();
+            (0.0..width as f32)
+                .contains(&x)
+                .then(|| (x, format!("{}, index {ior}", sphere.name)))
+        })
+        .collect();
+    if labels.is_empty() {
+        return image.clone();
+    }
+    let strip = 30;
+    let mut canvas = Canvas::new(width, height + strip, WHITE);
+    canvas.draw_rgb_image(image, 0, 0, 1);
+    for (x, label) in labels {
+        canvas.text(
+            x,
+            height as f32 + 7.0,
+            &label,
+            16.0,
+            TEXT,
+            Anchor::TOP_CENTRE,
+        );
+    }
+    canvas.to_rgb_image()
 }
 
 /// Why a shadow ray starts a little way off its surface: rounding puts the

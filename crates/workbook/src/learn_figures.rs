@@ -6,6 +6,8 @@ use std::path::{Path, PathBuf};
 use image::RgbImage;
 use image::imageops::{FilterType, resize};
 use raylab_cli::output::save_png;
+use raylab_plot::colour::{TEXT, WHITE};
+use raylab_plot::{Anchor, Canvas};
 
 use crate::JobError;
 
@@ -37,12 +39,31 @@ pub fn make_learn_figures(dir: &Path) -> Result<Vec<PathBuf>, JobError> {
     let reference = learn::check::reference_image(2);
     let difference = learn::compare::signed_difference(&acne, &reference);
     let mut written = Vec::new();
-    for (name, image) in NAMES.iter().zip([acne, difference]) {
+    let difference = with_sign_legend(&magnified(&difference));
+    for (name, image) in NAMES.iter().zip([magnified(&acne), difference]) {
         let path = dir.join(name);
-        save_png(&magnified(&image), &path)?;
+        save_png(&image, &path)?;
         written.push(path);
     }
     Ok(written)
+}
+
+/// The signed difference with its key under it: what red and blue mean,
+/// and how strongly the change is magnified.
+fn with_sign_legend(difference: &RgbImage) -> RgbImage {
+    let (width, height) = difference.dimensions();
+    let mut canvas = Canvas::new(width, height + 48, WHITE);
+    canvas.draw_rgb_image(difference, 0, 0, 1);
+    let full = 255.0 / learn::compare::GAIN;
+    let lines = [
+        "red: brighter than the reference; blue: darker; black: the same".to_owned(),
+        format!("a mean change of {full:.0} levels or more shows at full strength"),
+    ];
+    for (i, line) in lines.iter().enumerate() {
+        let y = height as f32 + 6.0 + 20.0 * i as f32;
+        canvas.text(width as f32 / 2.0, y, line, 13.0, TEXT, Anchor::TOP_CENTRE);
+    }
+    canvas.to_rgb_image()
 }
 
 fn magnified(image: &RgbImage) -> RgbImage {

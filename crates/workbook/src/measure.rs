@@ -16,6 +16,35 @@ pub fn luminance(c: Vec3) -> f32 {
     0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z
 }
 
+/// Below this luminance a pixel counts as black in [`log2_ratio`]: far
+/// under the darkest 8-bit step, so only truly black pixels are affected.
+pub const RATIO_FLOOR: f32 = 1e-5;
+
+/// Per pixel, how many times more light `b` has than `a`, as a power of
+/// two: +1 where `b` is twice as bright, −2 where it has a quarter of the
+/// light, 0 where both are black. A ratio and not a difference, so a dark
+/// shadow that gains little light in absolute terms still shows how much
+/// it gained compared with what it had.
+///
+/// # Panics
+///
+/// If the images differ in size.
+pub fn log2_ratio(a: &LinearImage, b: &LinearImage) -> Vec<f32> {
+    assert_eq!(
+        (a.width(), a.height()),
+        (b.width(), b.height()),
+        "can only compare images of the same size"
+    );
+    a.pixels()
+        .iter()
+        .zip(b.pixels())
+        .map(|(&a, &b)| {
+            let (a, b) = (luminance(a).max(RATIO_FLOOR), luminance(b).max(RATIO_FLOOR));
+            (b / a).log2()
+        })
+        .collect()
+}
+
 /// Per pixel, how much more light `b` has than `a`: the difference of
 /// their luminances (positive where `b` is brighter).
 ///
@@ -268,6 +297,17 @@ mod tests {
         assert!((d[0] - 0.25).abs() < 1e-6);
         // Green lost: 0.7152 × 0.5.
         assert!((d[1] + 0.3576).abs() < 1e-6, "{d:?}");
+    }
+
+    #[test]
+    fn the_log_ratio_counts_doublings_of_the_second_image_over_the_first() {
+        let a = image(&[Vec3::splat(0.2), Vec3::splat(0.4), Vec3::ZERO]);
+        let b = image(&[Vec3::splat(0.8), Vec3::splat(0.1), Vec3::ZERO]);
+        let r = log2_ratio(&a, &b);
+        // 0.8 / 0.2 = 4 = 2², 0.1 / 0.4 = 1/4, and black against black is 0.
+        assert!((r[0] - 2.0).abs() < 1e-5, "{r:?}");
+        assert!((r[1] + 2.0).abs() < 1e-5, "{r:?}");
+        assert_eq!(r[2], 0.0);
     }
 
     #[test]

@@ -18,12 +18,15 @@ use raylab::scene::Object;
 use raylab::{Camera, Hit, NoProgress, Sampling, Scene, Settings, Vec3};
 use raylab_cli::CliError;
 use raylab_cli::output::{save_png, save_text};
-use raylab_plot::colour::series_colour;
-use raylab_plot::{Colormap, ColourScale, Corner, HeatmapFigure, LinePlot, Series, montage};
+use raylab_plot::colour::{WHITE, series_colour};
+use raylab_plot::{
+    Canvas, Colormap, ColourScale, Corner, HeatmapFigure, LinePlot, Rgb, Series, montage,
+};
 
 use crate::measure::{
-    GroundMasks, ground_masks, lab_shadow_ratio, luminance, mean_luminance, mean_over_albedo,
-    mean_variance, primary_hits, rmse, shares, signed_difference, symmetric_range,
+    GroundMasks, ground_masks, lab_shadow_ratio, log2_ratio, luminance, mean_luminance,
+    mean_over_albedo, mean_variance, primary_hits, rmse, shares, signed_difference,
+    symmetric_range,
 };
 use crate::penumbra;
 use crate::{JobError, Size};
@@ -85,6 +88,41 @@ fn sun_name(size: Option<f32>) -> String {
     size.map_or("a point sun".to_owned(), |d| format!("a {d}° sun"))
 }
 
+/// The rectangle `(left, top, width, height)` of `image` of `width` ×
+/// `height` around `(x, y)`, moved inside the image where it would stick out.
+fn crop_rect(
+    image: &RgbImage,
+    (x, y): (f32, f32),
+    (width, height): (u32, u32),
+) -> (u32, u32, u32, u32) {
+    let (width, height) = (width.min(image.width()), height.min(image.height()));
+    let left = (x - width as f32 / 2.0).max(0.0) as u32;
+    let top = (y - height as f32 / 2.0).max(0.0) as u32;
+    (
+        left.min(image.width() - width),
+        top.min(image.height() - height),
+        width,
+        height,
+    )
+}
+
+/// `image` with the outline of the crop [`magnified_crop`] takes around
+/// `at`, so that a reader can find a zoomed detail in the whole picture.
+fn outline_crop(image: &RgbImage, at: (f32, f32), size: (u32, u32), colour: Rgb) -> RgbImage {
+    let (left, top, width, height) = crop_rect(image, at, size);
+    let mut canvas = Canvas::new(image.width(), image.height(), WHITE);
+    canvas.draw_rgb_image(image, 0, 0, 1);
+    canvas.stroke_rect(
+        left as f32 - 1.0,
+        top as f32 - 1.0,
+        width as f32 + 2.0,
+        height as f32 + 2.0,
+        colour,
+        2.0,
+    );
+    canvas.to_rgb_image()
+}
+
 /// A rectangle of `image` of `width` × `height` around `(x, y)` (kept
 /// inside the image), magnified `scale` times with hard pixel edges.
 pub fn magnified_crop(
@@ -93,13 +131,7 @@ pub fn magnified_crop(
     (width, height): (u32, u32),
     scale: u32,
 ) -> RgbImage {
-    let (width, height) = (width.min(image.width()), height.min(image.height()));
-    let left = (x - width as f32 / 2.0).max(0.0) as u32;
-    let top = (y - height as f32 / 2.0).max(0.0) as u32;
-    let (left, top) = (
-        left.min(image.width() - width),
-        top.min(image.height() - height),
-    );
+    let (left, top, width, height) = crop_rect(image, (x, y), (width, height));
     let crop = image::imageops::crop_imm(image, left, top, width, height).to_image();
     image::imageops::resize(
         &crop,
@@ -269,6 +301,23 @@ fn comparison(
     }
     .render();
 
+    // The same comparison as a ratio, where the text speaks of ratios.
+    let ratio = log2_ratio(whitted, &path.image);
+    let ratio_figure = HeatmapFigure {
+        title: "Path tracing over Whitted: how many times brighter",
+        caption: "Each pixel: log2 of chapter 6's luminance over chapter 5's, from −2 (a quarter \
+                  of the light, blue) to +2 (four times, red), clamped beyond; grey: the same. \
+                  A ratio, so a dark pixel that doubles is as red as a bright one that doubles.",
+        values: &ratio,
+        width: w as usize,
+        height: h as usize,
+        colour_scale: ColourScale::linear(-2.0, 2.0),
+        colour_bar_label: "log2 (chapter 6 ÷ chapter 5)",
+        colormap: Colormap::Diverging,
+        pixel_scale: Some(1),
+    }
+    .render();
+
     let brighter = difference.iter().filter(|&&d| d > 0.01).count();
     let darker = difference.iter().filter(|&&d| d < -0.01).count();
     let mut text = String::from(
@@ -303,6 +352,7 @@ fn comparison(
             ("whitted-and-path-traced.png", &side_by_side),
             ("whitted.png", &whitted.to_srgb8()),
             ("difference.png", &figure),
+            ("ratio.png", &ratio_figure),
         ],
         &[("difference.md", &text)],
     )
@@ -319,22 +369,28 @@ fn terms_figure(
 ) -> Result<Vec<PathBuf>, JobError> {
     let images: Vec<RgbImage> = path.terms().iter().map(|t| t.to_srgb8()).collect();
     let total = path.image.to_srgb8();
+    let whole = shares(path.terms(), None);
+    // sRGB lifts dark values: a term with a twentieth of the light looks
+    // far more than a twentieth as bright, so each tile says its share.
     let mut tiles: Vec<(String, &RgbImage)> = Terms::NAMES
         .iter()
         .zip(&images)
-        .map(|(name, image)| (name.to_string(), image))
+        .zip(whole)
+        .map(|((name, image), share)| (format!("{name}: {}", percent(share)), image))
         .collect();
-    tiles.push(("their sum: the image".to_owned(), &total));
+    tiles.push(("their sum: the image (100 %)".to_owned(), &total));
     let refs: Vec<(&str, &RgbImage)> = tiles.iter().map(|(l, i)| (l.as_str(), *i)).collect();
     let (w, h) = (path.settings.width, path.settings.height);
     let figure = montage(
-        &format!("Chapter 6's image split by term, {w}×{h}, {SPP} paths per pixel"),
+        &format!(
+            "Chapter 6's image split by term, {w}×{h}, {SPP} paths per pixel: all at the same \
+             exposure, in sRGB; each term's share of the image's luminance"
+        ),
         &refs,
         3,
     );
 
     let count = |m: &[bool]| m.iter().filter(|&&b| b).count();
-    let whole = shares(path.terms(), None);
     let shadow = shares(path.terms(), Some(&masks.shadowed));
     let lit = shares(path.terms(), Some(&masks.lit));
     let mut text = format!(
@@ -523,19 +579,30 @@ fn sun_figure(dir: &Path, suns: &[PathRender]) -> Result<Vec<PathBuf>, JobError>
         ("the glass ball's shadow", Vec3::new(2.15, 0.0, -0.12)),
         ("the mirror ball's shadow", Vec3::new(-0.28, 0.0, -0.27)),
     ];
+    // A tenth of the picture each way, magnified back to the picture's
+    // size, so that every tile of the montage is the same size.
     let crop = ((w / 10).max(4), (h / 10).max(3));
-    let scale = (240 / crop.0).max(1);
+    let scale = (w / crop.0).max(1);
     let images: Vec<RgbImage> = suns.iter().map(|r| r.image.to_srgb8()).collect();
+    let boxes = [[255, 200, 0], [255, 64, 160]];
     let mut tiles: Vec<(String, RgbImage)> = Vec::new();
     for (sun, image) in SUN_SIZES.iter().zip(&images) {
-        tiles.push((sun_name(*sun), image.clone()));
+        let mut outlined = image.clone();
+        for ((_, point), colour) in tips.iter().zip(boxes) {
+            outlined = outline_crop(&outlined, seen_at(&camera, *point, w, h), crop, colour);
+        }
+        tiles.push((
+            format!("{} (boxes: the crops below)", sun_name(*sun)),
+            outlined,
+        ));
     }
-    for (name, point) in tips {
-        let at = seen_at(&camera, point, w, h);
+    for ((name, point), colour) in tips.iter().zip(boxes) {
+        let at = seen_at(&camera, *point, w, h);
+        let frame = if colour == boxes[0] { "yellow" } else { "pink" };
         for (sun, image) in SUN_SIZES.iter().zip(&images) {
             tiles.push((
                 format!(
-                    "{}: {name}, {}×{} pixels, ×{scale}",
+                    "{}: {name} ({frame} box), {}×{} pixels ×{scale}",
                     sun_name(*sun),
                     crop.0,
                     crop.1
@@ -881,10 +948,13 @@ fn depth_figures(dir: &Path, size: Size, quiet: bool) -> Result<Vec<PathBuf>, Jo
         100.0 * total(&renders[0]) / last
     );
     let refs: Vec<(&str, &RgbImage)> = diffs.iter().map(|(l, i)| (l.as_str(), i)).collect();
-    let changes = montage(
-        "What each deeper limit adds (8-bit change × 8, magma; black: unchanged)",
-        &refs,
-        4,
+    let changes = raylab_plot::with_change_scale(
+        &montage(
+            "What each deeper limit adds (each change magnified 8 times; black: unchanged)",
+            &refs,
+            4,
+        ),
+        8.0,
     );
     save_all(
         dir,

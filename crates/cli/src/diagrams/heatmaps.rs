@@ -54,10 +54,11 @@ pub fn rays_figure(binary: &str, rendered: &Rendered, maps: &PixelMaps) -> RgbIm
             if most == 1 { "" } else { "s" }
         ));
     } else {
+        let total = rendered.counts.total();
         caption.push_str(&format!(
-            " From {least} to {most} rays a pixel, {} in all: the sky is cheapest, \
-             glass and mirrors the most expensive.",
-            raylab::frame::thousands(rendered.counts.total())
+            " From {least} to {most} rays a pixel, {} in all, {:.2} on average.",
+            raylab::frame::thousands(total),
+            total as f64 / maps.rays.len().max(1) as f64
         ));
     }
     HeatmapFigure {

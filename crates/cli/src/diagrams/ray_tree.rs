@@ -69,6 +69,7 @@ pub fn ray_tree_figure(
     title: &str,
     pixel: (u32, u32),
     log: &[TracedRay],
+    left_out: usize,
 ) -> RgbImage {
     let mut canvas = Canvas::new(WIDTH, HEIGHT, WHITE);
     canvas.text(
@@ -89,6 +90,21 @@ pub fn ray_tree_figure(
         if rays == 1 { "" } else { "s" },
         if shadows == 1 { "" } else { "s" },
     );
+    if left_out > 0 {
+        // Under the side view, where the figure has room.
+        canvas.text(
+            WIDTH as f32 * 0.71,
+            440.0,
+            &format!(
+                "Not drawn: {left_out} deeper ray{}, which together add under half an \
+                 8-bit step (--probe-full draws them).",
+                if left_out == 1 { "" } else { "s" }
+            ),
+            14.0,
+            TEXT_MUTED,
+            Anchor::TOP_CENTRE,
+        );
+    }
     canvas.text(
         WIDTH as f32 / 2.0,
         52.0,

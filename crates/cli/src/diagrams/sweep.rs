@@ -10,6 +10,7 @@ use crate::output::{WriteError, save_png, save_text};
 use raylab_plot::colour::SERIES;
 use raylab_plot::{
     Corner, LinePlot, Series, changed_pixels, magnified_difference, max_change, montage,
+    with_change_scale,
 };
 
 /// How much the image changed going from depth `depth − 1` to `depth`.
@@ -204,7 +205,11 @@ impl DepthSweep {
         png("changes.png", &self.changes_plot(binary))?;
         let settles = self.settles_at() as usize;
         let diff_name = format!("diff-1-vs-{settles}.png");
-        let diff = magnified_difference(&self.images[0], &self.images[settles - 1], 4.0);
+        // The scale's top is the largest change, so that nothing saturates.
+        let (first, settled) = (&self.images[0], &self.images[settles - 1]);
+        let largest = max_change(first, settled).max(1);
+        let gain = 255.0 / f32::from(largest);
+        let diff = with_change_scale(&magnified_difference(first, settled, gain), gain);
         png(&diff_name, &diff)?;
         let mut text = |name: &str, contents: String| -> Result<(), WriteError> {
             let path = dir.join(name);
@@ -216,7 +221,7 @@ impl DepthSweep {
         text("summary.md", self.summary_markdown(binary))?;
         // The book cannot know N in advance: it includes this line instead.
         let diff_md = format!(
-            "![{binary}: the change from depth 1 to depth {settles}, magnified 4 times]({book_dir}/{diff_name})\n"
+            "![{binary}: how much each pixel changes from depth 1 to depth {settles}, on a scale up to the largest change, {largest} levels]({book_dir}/{diff_name})\n"
         );
         text("diff.md", diff_md)?;
         Ok(written)
