@@ -66,12 +66,18 @@ pub struct Started {
 }
 
 impl Lab {
-    /// The lab of the workspace at `root`: `root/my-lab`, building into `root/target`.
+    /// The lab of the workspace at `root`: `root/my-lab`, building into the
+    /// workspace's target folder.
     pub fn in_workspace(root: &Path) -> Lab {
+        // Where cargo builds the workspace: `target/`, unless
+        // CARGO_TARGET_DIR says otherwise (relative to the root then).
+        let target = std::env::var_os("CARGO_TARGET_DIR")
+            .filter(|dir| !dir.is_empty())
+            .map_or_else(|| root.join("target"), |dir| root.join(dir));
         Lab {
             root: root.to_owned(),
             dir: root.join("my-lab"),
-            target: root.join("target"),
+            target,
             version: "0.1.0".to_owned(),
         }
     }
@@ -261,13 +267,27 @@ impl Lab {
     pub fn record_pass(&self, number: u8) -> Result<(), LabError> {
         let mut progress = self.progress();
         if progress.passed.insert(number) {
-            let path = self.progress_path();
-            let text = toml::to_string(&progress).expect("a set of numbers serialises");
-            let text =
-                format!("# Chapters whose check passed (`cargo run -p learn -- list`).\n{text}");
-            write_atomically(&path, &text)?;
+            self.save_progress(&progress)?;
         }
         Ok(())
+    }
+
+    /// Record that the core exercise `name` passed its check.
+    pub fn record_core_pass(&self, name: &str) -> Result<(), LabError> {
+        let mut progress = self.progress();
+        if progress.core.insert(name.to_owned()) {
+            self.save_progress(&progress)?;
+        }
+        Ok(())
+    }
+
+    fn save_progress(&self, progress: &Progress) -> Result<(), LabError> {
+        let text = toml::to_string(progress).expect("sets of numbers and names serialise");
+        let text = format!(
+            "# Chapters (`passed`) and core exercises (`core`) whose check passed\n\
+             # (`cargo run -p learn -- list`).\n{text}"
+        );
+        write_atomically(&self.progress_path(), &text)
     }
 }
 
@@ -276,16 +296,19 @@ impl Lab {
 pub struct Progress {
     #[serde(default)]
     pub passed: BTreeSet<u8>,
+    /// The core exercises passed, by name.
+    #[serde(default)]
+    pub core: BTreeSet<String>,
 }
 
-fn read(path: &Path) -> Result<String, LabError> {
+pub(crate) fn read(path: &Path) -> Result<String, LabError> {
     std::fs::read_to_string(path).map_err(|source| LabError::Read {
         path: path.to_owned(),
         source,
     })
 }
 
-fn parse_toml(path: &Path) -> Result<toml::Table, LabError> {
+pub(crate) fn parse_toml(path: &Path) -> Result<toml::Table, LabError> {
     read(path)?
         .parse()
         .map_err(|e: toml::de::Error| LabError::Manifest {
@@ -297,7 +320,7 @@ fn parse_toml(path: &Path) -> Result<toml::Table, LabError> {
 /// Write `text` to `path` only if no file is there; `false` if one was.
 /// `create_new` makes the test and the creation one step, so not even a
 /// file saved at the same moment is overwritten.
-fn write_new(path: &Path, text: &str) -> Result<bool, LabError> {
+pub(crate) fn write_new(path: &Path, text: &str) -> Result<bool, LabError> {
     let fail = |source| LabError::Write {
         path: path.to_owned(),
         source,
@@ -334,7 +357,7 @@ fn write_atomically(path: &Path, text: &str) -> Result<(), LabError> {
 }
 /// The `.rs` files under `dir/under`, as paths relative to `dir`, in
 /// sorted order, those of subfolders included.
-fn rust_files(dir: &Path, under: &Path) -> Result<Vec<PathBuf>, LabError> {
+pub(crate) fn rust_files(dir: &Path, under: &Path) -> Result<Vec<PathBuf>, LabError> {
     let folder = dir.join(under);
     let mut entries: Vec<_> = std::fs::read_dir(&folder)
         .map_err(|source| LabError::Read {

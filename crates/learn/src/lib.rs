@@ -8,7 +8,11 @@
 
 pub mod check;
 pub mod compare;
+pub mod core;
+pub mod core_lab;
 pub mod exercise;
 pub mod lab;
+pub mod path;
+pub mod regions;
 pub mod run;
 pub mod watch;
