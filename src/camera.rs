@@ -124,6 +124,7 @@ impl Camera {
     }
 }
 
+// ANCHOR: tests
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -244,3 +245,4 @@ mod tests {
         assert!((y - h).abs() < 1e-5, "y = {y}, not h = {h}");
     }
 }
+// ANCHOR_END: tests

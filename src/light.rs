@@ -46,6 +46,7 @@ pub struct Sun {
     pub brightness: f32,
 }
 
+// ANCHOR: tests
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -99,3 +100,4 @@ mod tests {
         );
     }
 }
+// ANCHOR_END: tests

@@ -59,6 +59,7 @@ pub fn fresnel(cos_i: f32, eta: f32) -> f32 {
 }
 // ANCHOR_END: fresnel
 
+// ANCHOR: tests
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -172,3 +173,4 @@ mod tests {
         }
     }
 }
+// ANCHOR_END: tests

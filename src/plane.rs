@@ -58,6 +58,7 @@ impl Checker {
     // ANCHOR_END: checker
 }
 
+// ANCHOR: tests
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -133,3 +134,4 @@ mod tests {
         assert_eq!(checker.albedo_at(Vec3::new(1.5, 0.0, 1.5)), Vec3::ONE);
     }
 }
+// ANCHOR_END: tests

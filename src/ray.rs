@@ -23,6 +23,7 @@ impl Ray {
         Ray { origin, direction }
     }
 
+    // ANCHOR: at
     /// The point at distance `t` along the ray.
     #[inline]
     pub fn at(&self, t: f32) -> Vec3 {
@@ -30,6 +31,7 @@ impl Ray {
         self.origin + t * self.direction
         // ANCHOR_END: todo_ray_at
     }
+    // ANCHOR_END: at
 }
 
 /// Why a ray was traced. The statistics, the heat maps and the ray-tree
@@ -76,6 +78,7 @@ impl RayKind {
     }
 }
 
+// ANCHOR: tests
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -103,3 +106,4 @@ mod tests {
         );
     }
 }
+// ANCHOR_END: tests

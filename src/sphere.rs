@@ -46,6 +46,7 @@ impl Sphere {
     }
 }
 
+// ANCHOR: tests
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -120,3 +121,4 @@ mod tests {
         assert!((t - 4.2).abs() < 1e-5, "t = {t}");
     }
 }
+// ANCHOR_END: tests

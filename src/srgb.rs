@@ -135,6 +135,7 @@ impl EncodeTable {
 }
 // ANCHOR_END: table
 
+// ANCHOR: tests
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -246,3 +247,4 @@ mod tests {
         assert_eq!(quantise(v), 3);
     }
 }
+// ANCHOR_END: tests

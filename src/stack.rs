@@ -59,6 +59,7 @@ impl Default for RayStack {
 }
 
 impl RayStack {
+    // ANCHOR: push_pop
     /// Put a ray on top of the stack.
     ///
     /// # Panics
@@ -79,6 +80,7 @@ impl RayStack {
         Some(self.rays[self.len])
         // ANCHOR_END: todo_stack_pop
     }
+    // ANCHOR_END: push_pop
 
     pub fn len(&self) -> usize {
         self.len
@@ -89,6 +91,7 @@ impl RayStack {
     }
 }
 
+// ANCHOR: tests
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -149,3 +152,4 @@ mod tests {
         }
     }
 }
+// ANCHOR_END: tests

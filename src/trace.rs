@@ -401,6 +401,7 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
     }
 }
 
+// ANCHOR: tests
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -615,3 +616,4 @@ mod tests {
         assert_eq!(weights, [1.0, 0.25, 0.25]);
     }
 }
+// ANCHOR_END: tests

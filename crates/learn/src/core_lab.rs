@@ -212,7 +212,7 @@ impl Lab {
             format!(
                 "{header}[workspace]\nresolver = \"3\"\nmembers = [{}]\n\n\
                  # Quick to compile after an edit; the libraries under it optimised.\n\
-                 [profile.dev]\nopt-level = 1\ndebug = false\n\n\
+                 [profile.dev]\nopt-level = 0\ndebug = false\n\n\
                  [profile.dev.package.\"*\"]\nopt-level = 3\ndebug = false\n",
                 members.join(", ")
             ),
