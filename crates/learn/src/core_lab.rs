@@ -19,7 +19,7 @@ use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
 use crate::core::{CoreExercise, owner};
-use crate::lab::{Lab, LabError, Started, read, rust_files, write_new};
+use crate::lab::{Lab, LabError, Started, inline_spec, read, rust_files, write_new};
 use crate::regions::{blank_keeping_markers, splice};
 
 /// The chapters the build workspace holds, by folder and package.
@@ -224,21 +224,11 @@ impl Lab {
 /// A dependency's spec as one inline TOML value, its `path` made absolute
 /// from the workspace's root.
 fn absolute_paths(spec: &toml::Value, root: &Path) -> String {
-    let Some(table) = spec.as_table() else {
-        return spec.to_string();
-    };
-    let fields: Vec<String> = table
-        .iter()
-        .map(|(key, value)| match (key.as_str(), value.as_str()) {
-            ("path", Some(path)) => {
-                let path = root.join(path);
-                let path = path.canonicalize().unwrap_or(path);
-                format!("path = {}", toml::Value::String(path.display().to_string()))
-            }
-            _ => format!("{key} = {value}"),
-        })
-        .collect();
-    format!("{{ {} }}", fields.join(", "))
+    inline_spec(spec, |path| {
+        let path = root.join(path);
+        let path = path.canonicalize().unwrap_or(path);
+        path.display().to_string()
+    })
 }
 
 /// Write `text` to `path` unless it holds exactly that already: a file

@@ -216,20 +216,9 @@ impl Lab {
     /// from the exercise's folder: relative inside the workspace (so that
     /// the workspace can move), absolute for a lab elsewhere.
     fn resolve(&self, exercise: &Exercise, spec: &toml::Value) -> String {
-        let Some(table) = spec.as_table() else {
-            return spec.to_string();
-        };
-        let fields: Vec<String> = table
-            .iter()
-            .map(|(key, value)| match (key.as_str(), value.as_str()) {
-                ("path", Some(path)) => {
-                    let path = self.path_from_exercise(exercise, Path::new(path));
-                    format!("path = {}", toml::Value::String(path))
-                }
-                _ => format!("{key} = {value}"),
-            })
-            .collect();
-        format!("{{ {} }}", fields.join(", "))
+        inline_spec(spec, |path| {
+            self.path_from_exercise(exercise, Path::new(path))
+        })
     }
 
     /// `path` (from the root) as the exercise's `Cargo.toml` should name it.
@@ -289,6 +278,22 @@ impl Lab {
         );
         write_atomically(&self.progress_path(), &text)
     }
+}
+
+/// A dependency's spec as one inline TOML value, its `path` (if it has
+/// one) rewritten by `path`.
+pub(crate) fn inline_spec(spec: &toml::Value, path: impl Fn(&str) -> String) -> String {
+    let Some(table) = spec.as_table() else {
+        return spec.to_string();
+    };
+    let fields: Vec<String> = table
+        .iter()
+        .map(|(key, value)| match (key.as_str(), value.as_str()) {
+            ("path", Some(old)) => format!("path = {}", toml::Value::String(path(old))),
+            _ => format!("{key} = {value}"),
+        })
+        .collect();
+    format!("{{ {} }}", fields.join(", "))
 }
 
 /// What the learner has done, kept in `my-lab/progress.toml`.

@@ -129,7 +129,7 @@ struct Wrong {
 }
 
 /// The wrong answers, one to each exercise, laid all at once.
-const WRONG: [Wrong; 9] = [
+const FIRST: [Wrong; 9] = [
     Wrong {
         exercise: "ray",
         file: "ray.rs",
@@ -209,45 +209,101 @@ const WRONG: [Wrong; 9] = [
     },
 ];
 
+/// More wrong answers, laid at once in a second build: the aspect ratio,
+/// a tangent, one side of the plane, the sky below the horizon, and the
+/// weights of the ray stack.
+const SECOND: [Wrong; 5] = [
+    Wrong {
+        exercise: "camera",
+        file: "camera.rs",
+        from: "* self.half_height * aspect;",
+        to: "* self.half_height;",
+        caught_by: "✗ a twice as wide image reaches twice as far to the side as up",
+        saying: "not −2h",
+    },
+    Wrong {
+        exercise: "sphere",
+        file: "sphere.rs",
+        from: "if disc < 0.0 {",
+        to: "if disc <= 0.0 {",
+        caught_by: "✗ a tangent ray touches the sphere once",
+        saying: "right: Some(5.0)",
+    },
+    Wrong {
+        exercise: "plane",
+        // A plane that is only hit from above.
+        file: "plane.rs",
+        from: "if denom.abs() < 1e-8 {",
+        to: "if denom > -1e-8 {",
+        caught_by: "✗ a ray from below the ground meets it from underneath",
+        saying: "right: Some(1.0)",
+    },
+    Wrong {
+        exercise: "sky",
+        // The square root of a negative height below the horizon.
+        file: "light.rs",
+        from: "let t = d.y.clamp(0.0, 1.0).sqrt();",
+        to: "let t = d.y.sqrt();",
+        caught_by: "✗ the sky at the horizon is the horizon colour",
+        saying: "NaN",
+    },
+    Wrong {
+        exercise: "stack",
+        // A ray's weight is its share alone, not its parent's weight times it.
+        file: "trace.rs",
+        from: "weight: pending.weight * secondary.share,",
+        to: "weight: secondary.share,",
+        caught_by: "✗ each bounce carries its parents weight times its share",
+        saying: "Vec3A(1.0, 1.0, 1.0)",
+    },
+];
+
 #[test]
 fn a_known_wrong_answer_to_each_core_exercise_is_caught_by_the_test_that_names_it() {
     let _turn = LOCK.lock().unwrap_or_else(|e| e.into_inner());
     let lab = author_lab();
-    lay_all(&lab, true);
-    for wrong in &WRONG {
-        let path = lab.core_src().join(wrong.file);
-        let text = std::fs::read_to_string(&path).unwrap();
-        assert!(
-            text.contains(wrong.from),
-            "{}: `{}`",
-            wrong.file,
-            wrong.from
-        );
-        std::fs::write(&path, text.replacen(wrong.from, wrong.to, 1)).unwrap();
+    for batch in [&FIRST[..], &SECOND[..]] {
+        lay_all(&lab, true);
+        for wrong in batch {
+            let path = lab.core_src().join(wrong.file);
+            let text = std::fs::read_to_string(&path).unwrap();
+            assert!(
+                text.contains(wrong.from),
+                "{}: `{}`",
+                wrong.file,
+                wrong.from
+            );
+            std::fs::write(&path, text.replacen(wrong.from, wrong.to, 1)).unwrap();
+        }
+        for wrong in batch {
+            caught(&lab, wrong);
+        }
     }
-    for wrong in &WRONG {
-        let exercise = CORE_EXERCISES
-            .iter()
-            .find(|e| e.name == wrong.exercise)
-            .unwrap();
-        let (verdict, text) = check(&lab, exercise);
-        assert!(
-            matches!(verdict, Verdict::TestsFail { .. }),
-            "`{}`: {verdict:?}\n{text}",
-            wrong.exercise
-        );
-        let caught = text
-            .split_once(wrong.caught_by)
-            .unwrap_or_else(|| panic!("`{}`: no `{}` in\n{text}", wrong.exercise, wrong.caught_by))
-            .1;
-        let message = caught.lines().nth(1).unwrap_or("");
-        assert!(
-            message.contains(wrong.saying),
-            "`{}`: the failure says `{message}`, not `{}`",
-            wrong.exercise,
-            wrong.saying
-        );
-    }
+}
+
+/// Check `wrong`'s exercise and see the expected test fail as expected.
+fn caught(lab: &Lab, wrong: &Wrong) {
+    let exercise = CORE_EXERCISES
+        .iter()
+        .find(|e| e.name == wrong.exercise)
+        .unwrap();
+    let (verdict, text) = check(lab, exercise);
+    assert!(
+        matches!(verdict, Verdict::TestsFail { .. }),
+        "`{}`: {verdict:?}\n{text}",
+        wrong.exercise
+    );
+    let after = text
+        .split_once(wrong.caught_by)
+        .unwrap_or_else(|| panic!("`{}`: no `{}` in\n{text}", wrong.exercise, wrong.caught_by))
+        .1;
+    let message = after.lines().nth(1).unwrap_or("");
+    assert!(
+        message.contains(wrong.saying),
+        "`{}`: the failure says `{message}`, not `{}`",
+        wrong.exercise,
+        wrong.saying
+    );
 }
 
 #[test]
