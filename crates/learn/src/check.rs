@@ -359,7 +359,7 @@ fn run_tests(
     if output.timed_out() {
         let _ = writeln!(
             out,
-            "  ✗ the step's tests did not finish in {} s and were stopped: does a loop never end?",
+            "  ✗ its tests did not finish in {} s and were stopped: does a loop never end?",
             limit.as_secs_f64()
         );
         return Err(Verdict::TestsTimedOut);
@@ -368,15 +368,15 @@ fn run_tests(
     let failed: Vec<&TestResult> = results.iter().filter(|r| !r.passed).collect();
     if results.is_empty() || (!output.success() && failed.is_empty()) {
         let why = panic_message(&output.stderr).unwrap_or_else(|| "no test ran".into());
-        let _ = writeln!(out, "  ✗ the step's tests could not run: {why}");
+        let _ = writeln!(out, "  ✗ its tests could not run: {why}");
         return Err(Verdict::TestsFail { failed: 0, of: 0 });
     }
     if failed.is_empty() {
-        let _ = writeln!(out, "  ✓ the step's {} tests pass:", results.len());
+        let _ = writeln!(out, "  ✓ its {} tests pass:", results.len());
     } else {
         let _ = writeln!(
             out,
-            "  ✗ {} of the step's {} tests fail:",
+            "  ✗ {} of its {} tests fail:",
             failed.len(),
             results.len()
         );
