@@ -72,6 +72,7 @@ impl Camera {
     /// row `j` (row 0 at the top) of a `width` × `height` image.
     #[inline]
     pub fn ray(&self, i: u32, j: u32, (sx, sy): (f32, f32), width: u32, height: u32) -> Ray {
+        // ANCHOR: todo_camera_ray "Map pixel (i + sx, j + sy) to x in [-h·a, h·a] (left to right) and y in [h, -h] (top to bottom) on the image plane at distance 1, and return the unit ray from the eye through forward + x·right + y·up."
         let (w, h) = (width as f32, height as f32);
         let aspect = w / h;
         // Map the pixel to [-1, 1] on the image plane at distance 1,
@@ -80,6 +81,7 @@ impl Camera {
         let y = (1.0 - 2.0 * (j as f32 + sy) / h) * self.half_height;
         let direction = (self.forward + x * self.right + y * self.up).normalize();
         Ray::new(self.eye, direction)
+        // ANCHOR_END: todo_camera_ray
     }
     // ANCHOR_END: ray
 
@@ -122,6 +124,7 @@ impl Camera {
     }
 }
 
+// ANCHOR: tests
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -179,4 +182,67 @@ mod tests {
         assert!(Camera::look_at(Vec3::ZERO, Vec3::X, Vec3::Y, 180.0).is_err());
         assert!(Camera::look_at(Vec3::ZERO, Vec3::ZERO, Vec3::Y, 45.0).is_err());
     }
+
+    #[test]
+    fn every_camera_ray_starts_at_the_eye_and_has_unit_length() {
+        let camera = Camera::lab();
+        for (i, j) in [(0, 0), (799, 0), (0, 599), (799, 599), (123, 456)] {
+            let ray = camera.ray(i, j, (0.5, 0.5), 800, 600);
+            assert_eq!(ray.origin, Vec3::new(0.0, 1.2, 4.5), "pixel {i},{j}");
+            let length = ray.direction.length();
+            assert!(
+                (length - 1.0).abs() < 1e-6,
+                "pixel {i},{j}: length {length}"
+            );
+        }
+    }
+
+    #[test]
+    fn the_pixel_centre_ray_of_an_800_by_600_image_goes_just_right_of_and_below_the_target() {
+        // Pixel (400, 300) at offset (0.5, 0.5): x = (2 · 400.5 / 800 − 1) · h · 4/3
+        // = 0.00069036 and y = (1 − 2 · 300.5 / 600) · h = −0.00069036, so the
+        // direction is normalize(f + x·r + y·u) with f = (0, −0.13216, −0.99123),
+        // r = (1, 0, 0) and u = (0, 0.99123, −0.13216).
+        let ray = Camera::lab().ray(400, 300, (0.5, 0.5), 800, 600);
+        let expected = Vec3::new(0.000_690_356, -0.132_847_96, -0.991_136_2);
+        assert!(
+            ray.direction.abs_diff_eq(expected, 1e-6),
+            "{}",
+            ray.direction
+        );
+    }
+
+    #[test]
+    fn row_0_is_the_top_of_the_image_and_column_0_its_left() {
+        let camera = Camera::lab();
+        let top_left = camera.ray(0, 0, (0.5, 0.5), 4, 4).direction;
+        let bottom_right = camera.ray(3, 3, (0.5, 0.5), 4, 4).direction;
+        assert!(
+            top_left.dot(camera.up()) > 0.0,
+            "row 0 must look up (y = +h at the top): {top_left}"
+        );
+        assert!(
+            top_left.dot(camera.right()) < 0.0,
+            "column 0 must look left (x = −h·a): {top_left}"
+        );
+        assert!(bottom_right.dot(camera.up()) < 0.0 && bottom_right.dot(camera.right()) > 0.0);
+    }
+
+    #[test]
+    fn a_twice_as_wide_image_reaches_twice_as_far_to_the_side_as_up() {
+        // The left edge of a 2:1 image is at x = −h · 2, its top at y = +h.
+        let camera = Camera::lab();
+        let ray = camera.ray(0, 0, (0.0, 0.0), 200, 100);
+        let along = ray.direction.dot(camera.forward());
+        let x = ray.direction.dot(camera.right()) / along;
+        let y = ray.direction.dot(camera.up()) / along;
+        let h = 0.414_213_57f32;
+        assert!(
+            (x + 2.0 * h).abs() < 1e-5,
+            "x = {x}, not −2h = {}",
+            -2.0 * h
+        );
+        assert!((y - h).abs() < 1e-5, "y = {y}, not h = {h}");
+    }
 }
+// ANCHOR_END: tests

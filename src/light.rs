@@ -14,9 +14,11 @@ impl Sky {
     /// The radiance arriving from unit direction `d`.
     #[inline]
     pub fn radiance(&self, d: Vec3) -> Vec3 {
+        // ANCHOR: todo_sky "With t = sqrt(clamp(d.y, 0, 1)), return (1 − t) · horizon + t · zenith."
         // The square root widens the bright band near the horizon.
         let t = d.y.clamp(0.0, 1.0).sqrt();
         (1.0 - t) * self.horizon + t * self.zenith
+        // ANCHOR_END: todo_sky
     }
     // ANCHOR_END: sky
 
@@ -44,6 +46,7 @@ pub struct Sun {
     pub brightness: f32,
 }
 
+// ANCHOR: tests
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -97,3 +100,4 @@ mod tests {
         );
     }
 }
+// ANCHOR_END: tests

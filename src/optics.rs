@@ -9,7 +9,9 @@ use crate::Vec3;
 /// `n` must be unit length; the result is as long as `d`.
 #[inline]
 pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
+    // ANCHOR: todo_reflect "Mirror d about the unit normal n: d − 2 · dot(d, n) · n."
     d - 2.0 * d.dot(n) * n
+    // ANCHOR_END: todo_reflect
 }
 // ANCHOR_END: reflect
 
@@ -23,12 +25,14 @@ pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
 /// the zero vector there).
 #[inline]
 pub fn refract(i: Vec3, n: Vec3, eta: f32) -> Option<Vec3> {
+    // ANCHOR: todo_refract "GLSL refract: k = 1 − eta² (1 − dot(n, i)²); None if k < 0 (total internal reflection), else eta · i − (eta · dot(n, i) + √k) · n."
     let cos_i = n.dot(i); // negative: `i` points into the surface
     let k = 1.0 - eta * eta * (1.0 - cos_i * cos_i); // = cos² θ₂
     if k < 0.0 {
         return None;
     }
     Some(eta * i - (eta * cos_i + k.sqrt()) * n)
+    // ANCHOR_END: todo_refract
 }
 // ANCHOR_END: refract
 
@@ -55,6 +59,7 @@ pub fn fresnel(cos_i: f32, eta: f32) -> f32 {
 }
 // ANCHOR_END: fresnel
 
+// ANCHOR: tests
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -168,3 +173,4 @@ mod tests {
         }
     }
 }
+// ANCHOR_END: tests

@@ -18,12 +18,14 @@ impl Plane {
     /// that gives `t = dot(p0 − o, n) / dot(d, n)`.
     #[inline]
     pub fn intersect(&self, ray: &Ray) -> Option<f32> {
+        // ANCHOR: todo_plane "No hit if |dot(d, n)| < 1e-8 (the ray runs parallel); else t = dot(p0 − o, n) / dot(d, n), a hit only if t > 0."
         let denom = ray.direction.dot(self.normal);
         if denom.abs() < 1e-8 {
             return None; // the ray runs parallel to the plane
         }
         let t = (self.point - ray.origin).dot(self.normal) / denom;
         (t > 0.0).then_some(t)
+        // ANCHOR_END: todo_plane
     }
     // ANCHOR_END: intersect
 }
@@ -40,6 +42,7 @@ impl Checker {
     /// The albedo at a point on the ground: squares of side 1 in x and z.
     #[inline]
     pub fn albedo_at(&self, point: Vec3) -> Vec3 {
+        // ANCHOR: todo_checker "With s = floor(x) + floor(z), return the even colour where s is even and the odd colour where it is odd (mind the negative squares)."
         // `floor`, not `as i32`: truncation would merge the two squares
         // either side of x = 0 into one double-width stripe.
         let s = point.x.floor() + point.z.floor();
@@ -50,10 +53,12 @@ impl Checker {
         } else {
             self.odd
         }
+        // ANCHOR_END: todo_checker
     }
     // ANCHOR_END: checker
 }
 
+// ANCHOR: tests
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -101,4 +106,32 @@ mod tests {
         // floor(-1.5) + floor(0.2) = -2: even.
         assert_eq!(checker.albedo_at(Vec3::new(-1.5, 0.0, 0.2)), Vec3::ONE);
     }
+
+    #[test]
+    fn a_ray_from_below_the_ground_meets_it_from_underneath() {
+        // Both sides of a plane count: dot(p0 − o, n) = 1 and dot(d, n) = 1.
+        let ray = Ray::new(Vec3::new(0.0, -1.0, 0.0), Vec3::Y);
+        assert_eq!(ground().intersect(&ray), Some(1.0));
+    }
+
+    #[test]
+    fn a_ray_straight_down_from_height_3_lands_at_t_3() {
+        let ray = Ray::new(Vec3::new(0.5, 3.0, -7.0), Vec3::NEG_Y);
+        assert_eq!(ground().intersect(&ray), Some(3.0));
+    }
+
+    #[test]
+    fn the_checker_squares_either_side_of_the_origin_differ() {
+        let checker = Checker {
+            even: Vec3::ONE,
+            odd: Vec3::ZERO,
+        };
+        // floor(0.5) + floor(-0.5) = −1: odd. Truncating (`as i32`) would give
+        // 0 + 0 = 0, even, and merge the squares either side of z = 0.
+        assert_eq!(checker.albedo_at(Vec3::new(0.5, 0.0, -0.5)), Vec3::ZERO);
+        // floor(1.5) + floor(0.5) = 1: odd; floor(1.5) + floor(1.5) = 2: even.
+        assert_eq!(checker.albedo_at(Vec3::new(1.5, 0.0, 0.5)), Vec3::ZERO);
+        assert_eq!(checker.albedo_at(Vec3::new(1.5, 0.0, 1.5)), Vec3::ONE);
+    }
 }
+// ANCHOR_END: tests

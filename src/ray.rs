@@ -23,11 +23,15 @@ impl Ray {
         Ray { origin, direction }
     }
 
+    // ANCHOR: at
     /// The point at distance `t` along the ray.
     #[inline]
     pub fn at(&self, t: f32) -> Vec3 {
+        // ANCHOR: todo_ray_at "Return the point at distance t along the ray: origin + t · direction."
         self.origin + t * self.direction
+        // ANCHOR_END: todo_ray_at
     }
+    // ANCHOR_END: at
 }
 
 /// Why a ray was traced. The statistics, the heat maps and the ray-tree
@@ -74,6 +78,7 @@ impl RayKind {
     }
 }
 
+// ANCHOR: tests
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -83,4 +88,22 @@ mod tests {
         let ray = Ray::new(Vec3::new(1.0, 2.0, 3.0), Vec3::X);
         assert_eq!(ray.at(2.5), Vec3::new(3.5, 2.0, 3.0));
     }
+
+    #[test]
+    fn the_point_at_distance_zero_is_the_origin() {
+        let ray = Ray::new(Vec3::new(1.0, 2.0, 3.0), Vec3::Y);
+        assert_eq!(ray.at(0.0), Vec3::new(1.0, 2.0, 3.0));
+    }
+
+    #[test]
+    fn a_point_at_distance_3_along_a_slanted_ray_is_3_units_away() {
+        // d = (0.6, 0.8, 0): 3 · d = (1.8, 2.4, 0).
+        let ray = Ray::new(Vec3::new(-1.0, 0.0, 2.0), Vec3::new(0.6, 0.8, 0.0));
+        assert!(
+            ray.at(3.0).abs_diff_eq(Vec3::new(0.8, 2.4, 2.0), 1e-6),
+            "{}",
+            ray.at(3.0)
+        );
+    }
 }
+// ANCHOR_END: tests

@@ -20,6 +20,7 @@ impl Sphere {
     /// `b = dot(o − c, d)` and `q = |o − c|² − R²` (because `|d| = 1`).
     #[inline]
     pub fn intersect(&self, ray: &Ray) -> Option<f32> {
+        // ANCHOR: todo_sphere "Solve t² + 2bt + q = 0 with b = dot(o − c, d), q = |o − c|² − R²: no hit if b² − q < 0, else the nearer root t0 = −b − √(b² − q) if it is > 0, else the far root t1 = −b + √(b² − q) if it is > 0 (the ray starts inside), else no hit."
         let oc = ray.origin - self.centre;
         let b = oc.dot(ray.direction);
         let q = oc.dot(oc) - self.radius * self.radius;
@@ -34,6 +35,7 @@ impl Sphere {
         }
         let t1 = -b + root; // where it leaves: the origin is inside
         (t1 > 0.0).then_some(t1)
+        // ANCHOR_END: todo_sphere
     }
     // ANCHOR_END: intersect
 
@@ -44,6 +46,7 @@ impl Sphere {
     }
 }
 
+// ANCHOR: tests
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -96,4 +99,26 @@ mod tests {
         };
         assert_eq!(sphere.normal_at(Vec3::new(1.0, 2.0, 0.0)), Vec3::Y);
     }
+
+    #[test]
+    fn a_ray_from_inside_an_off_centre_point_hits_the_far_side_1_away() {
+        // Radius 2, from (1, 0, 0) along +x: b = 1, q = 1 − 4 = −3, √(b² − q) = 2,
+        // so t0 = −3 (behind) and t1 = 1.
+        let sphere = Sphere {
+            centre: Vec3::ZERO,
+            radius: 2.0,
+        };
+        let ray = Ray::new(Vec3::new(1.0, 0.0, 0.0), Vec3::X);
+        assert_eq!(sphere.intersect(&ray), Some(1.0));
+    }
+
+    #[test]
+    fn a_ray_off_centre_enters_where_the_quadratic_says() {
+        // From (0, 0.6, 5) along −z: b = −5, q = 0.36 + 25 − 1 = 24.36,
+        // b² − q = 0.64, so t0 = 5 − 0.8 = 4.2.
+        let ray = Ray::new(Vec3::new(0.0, 0.6, 5.0), Vec3::NEG_Z);
+        let t = unit_sphere_at_origin().intersect(&ray).unwrap();
+        assert!((t - 4.2).abs() < 1e-5, "t = {t}");
+    }
 }
+// ANCHOR_END: tests

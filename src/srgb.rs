@@ -5,26 +5,32 @@
 /// value a display expects. Brightness perception is roughly logarithmic,
 /// so the curve spends more of the 256 levels on dark tones.
 pub fn linear_to_srgb(c: f32) -> f32 {
+    // ANCHOR: todo_srgb_curve "The sRGB transfer function: 12.92 · c for c ≤ 0.0031308, else 1.055 · c^(1/2.4) − 0.055."
     if c <= 0.003_130_8 {
         12.92 * c
     } else {
         1.055 * c.powf(1.0 / 2.4) - 0.055
     }
+    // ANCHOR_END: todo_srgb_curve
 }
 
 /// One linear channel to an 8-bit sRGB value: clamp, encode, round
 /// (halves away from zero). Light brighter than white clips to 255.
 pub fn encode_channel(c: f32) -> u8 {
+    // ANCHOR: todo_srgb_encode "Clamp c to [0, 1] (a NaN becomes 0), apply linear_to_srgb, then quantise."
     // A NaN never reaches here (the renderer checks every pixel), but if it
     // did it must not become an arbitrary byte: it encodes as black.
     let c = if c.is_nan() { 0.0 } else { c.clamp(0.0, 1.0) };
     quantise(linear_to_srgb(c))
+    // ANCHOR_END: todo_srgb_encode
 }
 
 /// An encoded value in [0, 1] to the nearest of 256 levels, halves away
 /// from zero (`f32::round`, not round-half-to-even).
 pub fn quantise(v: f32) -> u8 {
+    // ANCHOR: todo_srgb_quantise "Round 255 · v to the nearest whole number, halves away from zero, as a byte."
     (255.0 * v).round() as u8
+    // ANCHOR_END: todo_srgb_quantise
 }
 // ANCHOR_END: encode
 
@@ -129,6 +135,7 @@ impl EncodeTable {
 }
 // ANCHOR_END: table
 
+// ANCHOR: tests
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -240,3 +247,4 @@ mod tests {
         assert_eq!(quantise(v), 3);
     }
 }
+// ANCHOR_END: tests

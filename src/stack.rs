@@ -59,22 +59,28 @@ impl Default for RayStack {
 }
 
 impl RayStack {
+    // ANCHOR: push_pop
     /// Put a ray on top of the stack.
     ///
     /// # Panics
     /// When the stack is full, which the depth limit makes impossible for
     /// a step that sends at most [`MAX_SECONDARIES`] rays on per hit.
     pub fn push(&mut self, ray: PendingRay) {
+        // ANCHOR: todo_stack_push "Put the ray in the first free slot and count it (assert first that there is room: the ray stack overflowed)."
         assert!(self.len < STACK_CAPACITY, "the ray stack overflowed");
         self.rays[self.len] = ray;
         self.len += 1;
+        // ANCHOR_END: todo_stack_push
     }
 
     /// Take the ray on top of the stack.
     pub fn pop(&mut self) -> Option<PendingRay> {
+        // ANCHOR: todo_stack_pop "Take the ray on top (the last one pushed) and uncount it; None when the stack is empty."
         self.len = self.len.checked_sub(1)?;
         Some(self.rays[self.len])
+        // ANCHOR_END: todo_stack_pop
     }
+    // ANCHOR_END: push_pop
 
     pub fn len(&self) -> usize {
         self.len
@@ -85,6 +91,7 @@ impl RayStack {
     }
 }
 
+// ANCHOR: tests
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -111,4 +118,38 @@ mod tests {
         assert!(stack.pop().is_none());
         assert!(stack.is_empty());
     }
+
+    #[test]
+    fn popping_an_empty_stack_gives_nothing_and_leaves_it_empty() {
+        let mut stack = RayStack::default();
+        assert!(stack.pop().is_none());
+        assert_eq!(stack.len(), 0);
+        stack.push(pending(7));
+        assert_eq!(stack.pop().unwrap().depth, 7);
+        assert!(stack.pop().is_none());
+    }
+
+    #[test]
+    fn a_ray_pushed_keeps_everything_it_carries() {
+        let mut stack = RayStack::default();
+        let ray = PendingRay {
+            ray: Ray::new(Vec3::new(1.0, 2.0, 3.0), Vec3::Y),
+            kind: RayKind::Refraction,
+            weight: 0.49,
+            depth: 3,
+            parent: Some(5),
+        };
+        stack.push(ray);
+        assert_eq!(stack.pop(), Some(ray));
+    }
+
+    #[test]
+    #[should_panic(expected = "the ray stack overflowed")]
+    fn a_full_stack_refuses_one_more_ray() {
+        let mut stack = RayStack::default();
+        for _ in 0..=STACK_CAPACITY {
+            stack.push(pending(1));
+        }
+    }
 }
+// ANCHOR_END: tests

@@ -303,6 +303,7 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
     /// The colour seen along a primary ray: LAB.md's ray-stack loop.
     pub fn trace(&mut self, primary: Ray) -> Traced {
         let mut traced = self.start();
+        // ANCHOR: todo_trace "The ray-stack loop of LAB.md: push the primary ray (weight 1, depth 1); pop until empty, counting each ray (self.count) and, after shading, its feelers (self.count_shadow_rays); a ray that hits nothing adds weight · sky; one that hits adds weight · kept · local and, below max_depth and within RAY_BUDGET, pushes each ray sent on with weight × share and depth + 1."
         self.stack.push(PendingRay {
             ray: primary,
             kind: RayKind::Primary,
@@ -342,6 +343,7 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
             }
         }
         traced
+        // ANCHOR_END: todo_trace
     }
     // ANCHOR_END: trace
 
@@ -412,6 +414,7 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
     }
 }
 
+// ANCHOR: tests
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -559,4 +562,71 @@ mod tests {
             assert_eq!(all.colour_at_depth(depth), Some(one.trace(ray).colour));
         }
     }
+
+    /// Local light 1 everywhere, half of it sent on along the mirror direction.
+    struct HalfMirror;
+
+    impl Step for HalfMirror {
+        fn shade(&self, ray: &Ray, hit: &Hit, surface: &mut Surface) -> Vec3 {
+            let r = crate::optics::reflect(ray.direction, hit.facing_normal).normalize();
+            let next = Ray::new(hit.point + r * surface.epsilon(), r);
+            surface.send(RayKind::Reflection, next, 0.5);
+            Vec3::ONE
+        }
+    }
+
+    #[test]
+    fn a_primary_ray_that_meets_nothing_sees_the_sky_with_weight_1() {
+        // Straight up from between the mirrors: the sky, which is 1 everywhere here.
+        let scene = facing_mirrors();
+        let mut tracer = Tracer::new(&scene, &HalfMirror, 10, 1e-4);
+        let traced = tracer.trace(Ray::new(Vec3::ZERO, Vec3::Y));
+        assert_eq!(
+            traced.colour,
+            Vec3::ONE,
+            "push the primary ray with weight 1 before the first pop"
+        );
+        assert_eq!((traced.rays, traced.deepest), (1, 1));
+        assert_eq!(tracer.counts().get(RayKind::Primary), 1);
+    }
+
+    #[test]
+    fn each_bounce_carries_its_parents_weight_times_its_share() {
+        // Every hit keeps half (local 1 · kept ½) and sends half on. Weights
+        // 1, ½, ¼ at depths 1, 2, 3 add ½ + ¼ + ⅛ = 0.875; a weight that is
+        // the share alone (½, ½) would add up to 1.
+        let scene = facing_mirrors();
+        let mut tracer = Tracer::new(&scene, &HalfMirror, 3, 1e-4);
+        let traced = tracer.trace(Ray::new(Vec3::ZERO, Vec3::X));
+        assert_eq!(traced.colour, Vec3::splat(0.875));
+        assert_eq!((traced.rays, traced.deepest), (3, 3));
+    }
+
+    #[test]
+    fn the_ray_sent_last_is_traced_first() {
+        // A reflection then a refraction sent from the first hit: LAB.md
+        // pushes them in that order, so the refraction is popped first.
+        struct ReflectThenRefract;
+        impl Step for ReflectThenRefract {
+            fn shade(&self, ray: &Ray, hit: &Hit, surface: &mut Surface) -> Vec3 {
+                let r = crate::optics::reflect(ray.direction, hit.facing_normal).normalize();
+                let next = Ray::new(hit.point + r * 1e-4, r);
+                surface.send(RayKind::Reflection, next, 0.25);
+                surface.send(RayKind::Refraction, next, 0.25);
+                Vec3::ONE
+            }
+        }
+        let scene = facing_mirrors();
+        let mut tracer = Tracer::new(&scene, &ReflectThenRefract, 2, 1e-4).with_log();
+        tracer.trace(Ray::new(Vec3::ZERO, Vec3::X));
+        let kinds: Vec<RayKind> = tracer.log().iter().map(|r| r.kind).collect();
+        assert_eq!(
+            kinds,
+            [RayKind::Primary, RayKind::Refraction, RayKind::Reflection],
+            "the last ray pushed is the first popped"
+        );
+        let weights: Vec<f32> = tracer.log().iter().map(|r| r.weight).collect();
+        assert_eq!(weights, [1.0, 0.25, 0.25]);
+    }
 }
+// ANCHOR_END: tests

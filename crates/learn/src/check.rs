@@ -2,7 +2,7 @@
 //! tests, and render the reference image?
 
 use std::io::Write;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use image::RgbImage;
@@ -10,6 +10,8 @@ use raylab::{Camera, Keep, NoProgress, Scene, Step, render};
 use raylab_cli::{Chapter, Options};
 
 use crate::compare::{Comparison, GAIN, compare, signed_difference};
+use crate::core::CoreExercise;
+use crate::core_lab::{package_name, program_name};
 use crate::exercise::Exercise;
 use crate::lab::Lab;
 use crate::run::{
@@ -48,6 +50,8 @@ pub enum Verdict {
     RenderTimedOut,
     NonFinite(usize),
     Differs(Comparison),
+    /// The learner's file lost the marker lines the check needs.
+    Markers(String),
     /// Something outside the learner's code went wrong (cargo missing …).
     Broken(String),
 }
@@ -113,11 +117,17 @@ fn check_steps(lab: &Lab, exercise: &Exercise, limits: Limits, out: &mut dyn Wri
     };
     let _ = writeln!(out, "  ✓ it compiles");
 
-    if let Err(verdict) = run_tests(&tests, &folder, limits.tests, out) {
+    if let Err(verdict) = run_tests(&tests, &folder, &[], limits.tests, out) {
         return verdict;
     }
 
-    let verdict = render_and_compare(lab, exercise, &program, &here, limits.render, out);
+    let picture = Picture {
+        number: exercise.number,
+        package: exercise.package,
+        flags: exercise.flags,
+        dir: folder.join("check"),
+    };
+    let verdict = render_and_compare(&picture, &program, &here, limits.render, out);
     if verdict.passed() {
         let _ = writeln!(
             out,
@@ -134,6 +144,130 @@ fn check_steps(lab: &Lab, exercise: &Exercise, limits: Limits, out: &mut dyn Wri
     verdict
 }
 
+/// Check one core exercise: its regions, with the learner's core.
+pub fn check_core(
+    lab: &Lab,
+    exercise: &CoreExercise,
+    limits: Limits,
+    out: &mut dyn Write,
+) -> Verdict {
+    let verdict = check_core_steps(lab, exercise, limits, out);
+    if let Verdict::Broken(why) = &verdict {
+        let _ = writeln!(out, "learn: error: {why}");
+    }
+    verdict
+}
+
+fn check_core_steps(
+    lab: &Lab,
+    exercise: &CoreExercise,
+    limits: Limits,
+    out: &mut dyn Write,
+) -> Verdict {
+    let here = std::env::current_dir().unwrap_or_default();
+    let src = shown(&lab.core_src(), &here);
+    if !lab.core_started(exercise) {
+        let _ = writeln!(
+            out,
+            "learn: error: no exercise `{name}` in {src}: make it with `cargo run -p learn -- start {name}`",
+            name = exercise.name
+        );
+        return Verdict::NoExercise;
+    }
+    let files: Vec<String> = exercise
+        .files
+        .iter()
+        .map(|f| format!("{src}/{f}"))
+        .collect();
+    let _ = writeln!(
+        out,
+        "core exercise `{}` ({}), {}:",
+        exercise.name,
+        exercise.title,
+        files.join(" and ")
+    );
+    let progress = lab.progress();
+    if let Err(error) = lab.assemble_core(exercise, &progress.core) {
+        return match error {
+            crate::lab::LabError::Manifest { path, what } if path.starts_with(lab.core_src()) => {
+                let _ = writeln!(out, "  ✗ {}: {what}", shown(&path, &here));
+                Verdict::Markers(what)
+            }
+            error => Verdict::Broken(error.to_string()),
+        };
+    }
+    let build = lab.core_build();
+    let manifest = build.join("Cargo.toml");
+    let (Some(program), Some(package)) = (
+        program_name(exercise.chapter),
+        package_name(exercise.chapter),
+    ) else {
+        return Verdict::Broken(format!("no chapter {} to render", exercise.chapter));
+    };
+    if !lab.target.join("debug").join(&program).exists() {
+        first_build_note(out);
+    }
+    // Compiler messages name the copy the build compiles; show the
+    // learner's file instead (the same lines where the whole file is theirs).
+    let shown_as = [(
+        "raylab/src/".to_owned(),
+        format!("{}/", shown(&lab.core_src(), &here)),
+    )];
+    // The tests first: when they fail, nothing else needs building.
+    let built = match cargo_build(
+        &manifest,
+        &lab.target,
+        &["-p", "raylab", "--lib", "--tests"],
+        &shown_as,
+        out,
+    ) {
+        Ok(built) => built,
+        Err(verdict) => return verdict,
+    };
+    let Some(tests) = built.tests else {
+        return Verdict::Broken("the build made no test harness for the core".into());
+    };
+    let _ = writeln!(out, "  ✓ it compiles");
+    if let Err(verdict) = run_tests(&tests, &build, exercise.tests, limits.tests, out) {
+        return verdict;
+    }
+    let built = match cargo_build(
+        &manifest,
+        &lab.target,
+        &["-p", package, "--bin", &program],
+        &shown_as,
+        out,
+    ) {
+        Ok(built) => built,
+        Err(verdict) => return verdict,
+    };
+    let Some(program) = built.program else {
+        return Verdict::Broken(format!("the build made no {program}"));
+    };
+    let picture = Picture {
+        number: exercise.chapter,
+        package,
+        flags: &[],
+        dir: lab.core_check_dir(exercise),
+    };
+    let verdict = render_and_compare(&picture, &program, &here, limits.render, out);
+    if verdict.passed() {
+        let _ = writeln!(
+            out,
+            "  ✓ chapter {}'s render ({WIDTH}×{HEIGHT}) with your core matches the reference within LAB.md's tolerance\n\
+             Done: `{}` passes. The reference is in src/ ({}), and the book's {}.",
+            exercise.chapter,
+            exercise.name,
+            exercise.files.join(", "),
+            crate::core::PAGE,
+        );
+        if let Err(error) = lab.record_core_pass(exercise.name) {
+            let _ = writeln!(out, "learn: could not record the pass: {error}");
+        }
+    }
+    verdict
+}
+
 /// Build the exercise's program and test harness in the shared target.
 fn build(lab: &Lab, exercise: &Exercise, out: &mut dyn Write) -> Result<Built, Verdict> {
     let folder = lab.folder(exercise);
@@ -141,22 +275,45 @@ fn build(lab: &Lab, exercise: &Exercise, out: &mut dyn Write) -> Result<Built, V
     // libraries under it come from the workspace's own build).
     let program = format!("my-{}{}", exercise.package, std::env::consts::EXE_SUFFIX);
     if !lab.target.join("debug").join(program).exists() {
-        let _ = writeln!(
-            out,
-            "  building your exercise for the first time (a minute or two; later checks take seconds) …"
-        );
-        let _ = out.flush();
+        first_build_note(out);
     }
+    cargo_build(
+        &folder.join("Cargo.toml"),
+        &lab.target,
+        &["--all-targets"],
+        &[],
+        out,
+    )
+}
+
+fn first_build_note(out: &mut dyn Write) {
+    let _ = writeln!(
+        out,
+        "  building your exercise for the first time (a minute or two; later checks take seconds) …"
+    );
+    let _ = out.flush();
+}
+
+/// `cargo build` of the workspace at `manifest` into `target`, with the
+/// compiler's messages shown as they are, each `(from, to)` of `shown_as`
+/// replaced (the learner's files are compiled from a copy).
+fn cargo_build(
+    manifest: &Path,
+    target: &Path,
+    args: &[&str],
+    shown_as: &[(String, String)],
+    out: &mut dyn Write,
+) -> Result<Built, Verdict> {
     let mut command = cargo();
     command
         .arg("build")
         .arg("--quiet")
-        .arg("--all-targets")
+        .args(args)
         .arg("--message-format=json-render-diagnostics")
         .arg("--manifest-path")
-        .arg(folder.join("Cargo.toml"))
+        .arg(manifest)
         .arg("--target-dir")
-        .arg(&lab.target)
+        .arg(target)
         .env("CARGO_TERM_COLOR", "never");
     let output = run_with_limit(command, BUILD_TIME_LIMIT)
         .map_err(|e| Verdict::Broken(format!("cannot run cargo: {e}")))?;
@@ -169,7 +326,11 @@ fn build(lab: &Lab, exercise: &Exercise, out: &mut dyn Write) -> Result<Built, V
         return Err(Verdict::DoesNotCompile);
     }
     if !output.success() {
-        let _ = write!(out, "{}", output.stderr);
+        let mut messages = output.stderr.clone();
+        for (from, to) in shown_as {
+            messages = messages.replace(from, to);
+        }
+        let _ = write!(out, "{messages}");
         let _ = writeln!(
             out,
             "  ✗ it does not compile: the compiler's messages are above"
@@ -183,6 +344,7 @@ fn build(lab: &Lab, exercise: &Exercise, out: &mut dyn Write) -> Result<Built, V
 fn run_tests(
     harness: &Path,
     folder: &Path,
+    filters: &[&str],
     limit: Duration,
     out: &mut dyn Write,
 ) -> Result<(), Verdict> {
@@ -190,13 +352,14 @@ fn run_tests(
     command
         .current_dir(folder)
         .arg("--color=never")
+        .args(filters)
         .env("RUST_BACKTRACE", "0");
     let output = run_with_limit(command, limit)
         .map_err(|e| Verdict::Broken(format!("cannot run the tests: {e}")))?;
     if output.timed_out() {
         let _ = writeln!(
             out,
-            "  ✗ the step's tests did not finish in {} s and were stopped: does a loop never end?",
+            "  ✗ its tests did not finish in {} s and were stopped: does a loop never end?",
             limit.as_secs_f64()
         );
         return Err(Verdict::TestsTimedOut);
@@ -205,15 +368,15 @@ fn run_tests(
     let failed: Vec<&TestResult> = results.iter().filter(|r| !r.passed).collect();
     if results.is_empty() || (!output.success() && failed.is_empty()) {
         let why = panic_message(&output.stderr).unwrap_or_else(|| "no test ran".into());
-        let _ = writeln!(out, "  ✗ the step's tests could not run: {why}");
+        let _ = writeln!(out, "  ✗ its tests could not run: {why}");
         return Err(Verdict::TestsFail { failed: 0, of: 0 });
     }
     if failed.is_empty() {
-        let _ = writeln!(out, "  ✓ the step's {} tests pass:", results.len());
+        let _ = writeln!(out, "  ✓ its {} tests pass:", results.len());
     } else {
         let _ = writeln!(
             out,
-            "  ✗ {} of the step's {} tests fail:",
+            "  ✗ {} of its {} tests fail:",
             failed.len(),
             results.len()
         );
@@ -240,21 +403,32 @@ fn size_flags() -> [String; 2] {
     [format!("--width={WIDTH}"), format!("--height={HEIGHT}")]
 }
 
+/// What the picture check renders, and where it writes what it finds.
+struct Picture<'a> {
+    /// The chapter whose reference image it is compared with.
+    number: u8,
+    /// That chapter's package, for the reference's probe command.
+    package: &'a str,
+    /// Flags besides the size.
+    flags: &'a [&'a str],
+    /// Where the learner's, the reference's and the difference images go.
+    dir: PathBuf,
+}
+
 /// Render the learner's program small and compare it with the reference.
 fn render_and_compare(
-    lab: &Lab,
-    exercise: &Exercise,
+    picture: &Picture,
     program: &Path,
     here: &Path,
     limit: Duration,
     out: &mut dyn Write,
 ) -> Verdict {
-    let dir = lab.folder(exercise).join("check");
+    let dir = &picture.dir;
     let scratch = dir.join("render");
     let mut command = std::process::Command::new(program);
     command
         .args(size_flags())
-        .args(exercise.flags)
+        .args(picture.flags)
         .arg("--no-diagrams")
         .arg(format!("--out={}", scratch.display()))
         .env("RUST_BACKTRACE", "0");
@@ -288,17 +462,17 @@ fn render_and_compare(
         Ok(image) => image.to_rgb8(),
         Err(e) => return Verdict::Broken(format!("cannot read the render: {e}")),
     };
-    let reference = reference_image(exercise.number);
+    let reference = reference_image(picture.number);
     let comparison = compare(&learner, &reference);
     if comparison.meets_lab_tolerance() {
         return Verdict::Passed;
     }
     report_difference(
-        exercise,
+        picture.package,
         &comparison,
         (&learner, &reference),
         program,
-        &dir,
+        dir,
         here,
         out,
     );
@@ -308,7 +482,7 @@ fn render_and_compare(
 /// The mismatch, as `idiff` would put it, with the three images and the
 /// probe commands that show the worst pixel's ray trees.
 fn report_difference(
-    exercise: &Exercise,
+    package: &str,
     comparison: &Comparison,
     (learner, reference): (&RgbImage, &RgbImage),
     program: &Path,
@@ -367,7 +541,7 @@ fn report_difference(
             w.x,
             w.y,
             shown(&dir.join("probe"), here),
-            exercise.package,
+            package,
             w.x,
             w.y,
             shown(&dir.join("probe-reference"), here),

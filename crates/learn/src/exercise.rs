@@ -27,6 +27,8 @@ pub struct Exercise {
     pub dir: &'static str,
     /// The chapter's package (and program) name.
     pub package: &'static str,
+    /// What the learner writes, in a few words, for `learn list`.
+    pub title: &'static str,
     /// The book's page for it, from the workspace's root.
     pub page: &'static str,
     /// The file of the chapter's crate that holds the step, from its folder.
@@ -44,6 +46,7 @@ pub const EXERCISES: [Exercise; 6] = [
         number: 1,
         dir: "chapters/01-ray-cast",
         package: "ch01-ray-cast",
+        title: "Lambert and the sun (`local_light`)",
         page: "book/src/ch01-ray-casting.md",
         step: "src/lib.rs",
         flags: &[],
@@ -56,6 +59,7 @@ pub const EXERCISES: [Exercise; 6] = [
         number: 2,
         dir: "chapters/02-shadows",
         package: "ch02-shadows",
+        title: "the shadow feeler (`sun_factor`)",
         page: "book/src/ch02-shadows.md",
         step: "src/lib.rs",
         flags: &[],
@@ -69,6 +73,7 @@ pub const EXERCISES: [Exercise; 6] = [
         number: 3,
         dir: "chapters/03-reflection",
         package: "ch03-reflection",
+        title: "sending the reflection (`send_reflection`)",
         page: "book/src/ch03-reflection.md",
         step: "src/lib.rs",
         flags: &[],
@@ -81,6 +86,7 @@ pub const EXERCISES: [Exercise; 6] = [
         number: 4,
         dir: "chapters/04-refraction",
         package: "ch04-refraction",
+        title: "sending the refraction (`send_refraction`)",
         page: "book/src/ch04-refraction.md",
         step: "src/lib.rs",
         flags: &[],
@@ -95,6 +101,7 @@ pub const EXERCISES: [Exercise; 6] = [
         number: 5,
         dir: "chapters/05-antialiasing",
         package: "ch05-antialiasing",
+        title: "the lab's five rays (`lab_five`)",
         page: "book/src/ch05-antialiasing.md",
         step: "src/lib.rs",
         flags: &[],
@@ -108,6 +115,7 @@ pub const EXERCISES: [Exercise; 6] = [
         number: 6,
         dir: "chapters/06-path-tracing",
         package: "ch06-path-tracing",
+        title: "the choice of lobe (`choose_lobe`)",
         page: "book/src/ch06-path-tracing.md",
         step: "src/integrator.rs",
         flags: &["--spp=16"],
@@ -211,7 +219,7 @@ pub fn blank(source: &str) -> Result<Blanked, MarkerError> {
 }
 
 /// `NAME "task"` → the task.
-fn parse_start(rest: &str) -> Option<Task> {
+pub(crate) fn parse_start(rest: &str) -> Option<Task> {
     let (name, text) = rest.split_once(' ')?;
     let text = text.trim().strip_prefix('"')?.strip_suffix('"')?;
     (!name.is_empty() && !text.is_empty() && !text.contains('"')).then(|| Task {

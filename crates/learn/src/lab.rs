@@ -66,12 +66,18 @@ pub struct Started {
 }
 
 impl Lab {
-    /// The lab of the workspace at `root`: `root/my-lab`, building into `root/target`.
+    /// The lab of the workspace at `root`: `root/my-lab`, building into the
+    /// workspace's target folder.
     pub fn in_workspace(root: &Path) -> Lab {
+        // Where cargo builds the workspace: `target/`, unless
+        // CARGO_TARGET_DIR says otherwise (relative to the root then).
+        let target = std::env::var_os("CARGO_TARGET_DIR")
+            .filter(|dir| !dir.is_empty())
+            .map_or_else(|| root.join("target"), |dir| root.join(dir));
         Lab {
             root: root.to_owned(),
             dir: root.join("my-lab"),
-            target: root.join("target"),
+            target,
             version: "0.1.0".to_owned(),
         }
     }
@@ -210,20 +216,9 @@ impl Lab {
     /// from the exercise's folder: relative inside the workspace (so that
     /// the workspace can move), absolute for a lab elsewhere.
     fn resolve(&self, exercise: &Exercise, spec: &toml::Value) -> String {
-        let Some(table) = spec.as_table() else {
-            return spec.to_string();
-        };
-        let fields: Vec<String> = table
-            .iter()
-            .map(|(key, value)| match (key.as_str(), value.as_str()) {
-                ("path", Some(path)) => {
-                    let path = self.path_from_exercise(exercise, Path::new(path));
-                    format!("path = {}", toml::Value::String(path))
-                }
-                _ => format!("{key} = {value}"),
-            })
-            .collect();
-        format!("{{ {} }}", fields.join(", "))
+        inline_spec(spec, |path| {
+            self.path_from_exercise(exercise, Path::new(path))
+        })
     }
 
     /// `path` (from the root) as the exercise's `Cargo.toml` should name it.
@@ -261,14 +256,44 @@ impl Lab {
     pub fn record_pass(&self, number: u8) -> Result<(), LabError> {
         let mut progress = self.progress();
         if progress.passed.insert(number) {
-            let path = self.progress_path();
-            let text = toml::to_string(&progress).expect("a set of numbers serialises");
-            let text =
-                format!("# Chapters whose check passed (`cargo run -p learn -- list`).\n{text}");
-            write_atomically(&path, &text)?;
+            self.save_progress(&progress)?;
         }
         Ok(())
     }
+
+    /// Record that the core exercise `name` passed its check.
+    pub fn record_core_pass(&self, name: &str) -> Result<(), LabError> {
+        let mut progress = self.progress();
+        if progress.core.insert(name.to_owned()) {
+            self.save_progress(&progress)?;
+        }
+        Ok(())
+    }
+
+    fn save_progress(&self, progress: &Progress) -> Result<(), LabError> {
+        let text = toml::to_string(progress).expect("sets of numbers and names serialise");
+        let text = format!(
+            "# Chapters (`passed`) and core exercises (`core`) whose check passed\n\
+             # (`cargo run -p learn -- list`).\n{text}"
+        );
+        write_atomically(&self.progress_path(), &text)
+    }
+}
+
+/// A dependency's spec as one inline TOML value, its `path` (if it has
+/// one) rewritten by `path`.
+pub(crate) fn inline_spec(spec: &toml::Value, path: impl Fn(&str) -> String) -> String {
+    let Some(table) = spec.as_table() else {
+        return spec.to_string();
+    };
+    let fields: Vec<String> = table
+        .iter()
+        .map(|(key, value)| match (key.as_str(), value.as_str()) {
+            ("path", Some(old)) => format!("path = {}", toml::Value::String(path(old))),
+            _ => format!("{key} = {value}"),
+        })
+        .collect();
+    format!("{{ {} }}", fields.join(", "))
 }
 
 /// What the learner has done, kept in `my-lab/progress.toml`.
@@ -276,16 +301,19 @@ impl Lab {
 pub struct Progress {
     #[serde(default)]
     pub passed: BTreeSet<u8>,
+    /// The core exercises passed, by name.
+    #[serde(default)]
+    pub core: BTreeSet<String>,
 }
 
-fn read(path: &Path) -> Result<String, LabError> {
+pub(crate) fn read(path: &Path) -> Result<String, LabError> {
     std::fs::read_to_string(path).map_err(|source| LabError::Read {
         path: path.to_owned(),
         source,
     })
 }
 
-fn parse_toml(path: &Path) -> Result<toml::Table, LabError> {
+pub(crate) fn parse_toml(path: &Path) -> Result<toml::Table, LabError> {
     read(path)?
         .parse()
         .map_err(|e: toml::de::Error| LabError::Manifest {
@@ -297,7 +325,7 @@ fn parse_toml(path: &Path) -> Result<toml::Table, LabError> {
 /// Write `text` to `path` only if no file is there; `false` if one was.
 /// `create_new` makes the test and the creation one step, so not even a
 /// file saved at the same moment is overwritten.
-fn write_new(path: &Path, text: &str) -> Result<bool, LabError> {
+pub(crate) fn write_new(path: &Path, text: &str) -> Result<bool, LabError> {
     let fail = |source| LabError::Write {
         path: path.to_owned(),
         source,
@@ -334,7 +362,7 @@ fn write_atomically(path: &Path, text: &str) -> Result<(), LabError> {
 }
 /// The `.rs` files under `dir/under`, as paths relative to `dir`, in
 /// sorted order, those of subfolders included.
-fn rust_files(dir: &Path, under: &Path) -> Result<Vec<PathBuf>, LabError> {
+pub(crate) fn rust_files(dir: &Path, under: &Path) -> Result<Vec<PathBuf>, LabError> {
     let folder = dir.join(under);
     let mut entries: Vec<_> = std::fs::read_dir(&folder)
         .map_err(|source| LabError::Read {

@@ -1,6 +1,8 @@
 //! # learn: do the lab yourself
 //!
-//! Each chapter's step as an exercise. `cargo run -p learn -- start 2`
+//! The core's regions (`src/`, the track before chapter 1: [`core`], built
+//! on the learner's copy by [`core_lab`]) and each chapter's step as
+//! exercises, one path ([`path`]). `cargo run -p learn -- start 2`
 //! lays chapter 2 with its shadow ray blanked into `my-lab/ch02/`;
 //! `cargo run -p learn -- check 2` builds it, runs the chapter's tests on
 //! it and compares its render with the reference chapter's; `watch 2`
@@ -8,7 +10,11 @@
 
 pub mod check;
 pub mod compare;
+pub mod core;
+pub mod core_lab;
 pub mod exercise;
 pub mod lab;
+pub mod path;
+pub mod regions;
 pub mod run;
 pub mod watch;

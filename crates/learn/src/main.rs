@@ -1,5 +1,5 @@
-//! `cargo run -p learn -- <start|check|watch|hint|list> [N]`, from the
-//! workspace's root: do each chapter's step yourself.
+//! `cargo run -p learn -- <start|check|watch|hint|list> [NAME]`, from the
+//! workspace's root: write the core and each chapter's step yourself.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -7,12 +7,13 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
-use learn::check::{RENDER_TIME_LIMIT, TEST_TIME_LIMIT, check};
-use learn::exercise::{EXERCISES, Exercise, blank, exercise};
+use learn::check::{Limits, RENDER_TIME_LIMIT, TEST_TIME_LIMIT, check, check_core};
+use learn::exercise::blank;
 use learn::lab::Lab;
+use learn::path::{self, Item};
 
-/// Do the lab yourself: write each chapter's step, checked by its tests
-/// and against the reference image.
+/// Do the lab yourself: write the tracer's core and each chapter's step,
+/// each checked by its tests and against the reference image.
 #[derive(Parser, Debug)]
 #[command(name = "learn", version)]
 struct Cli {
@@ -22,15 +23,16 @@ struct Cli {
 
 #[derive(Subcommand, Debug)]
 enum Command {
-    /// Lay chapter N's exercise into my-lab/chNN/ (never overwrites your files)
-    Start { chapter: u8 },
-    /// Build chapter N's exercise, run its tests, compare its render with the reference
-    Check { chapter: u8 },
-    /// Check chapter N again every time you save, until Ctrl-C
-    Watch { chapter: u8 },
-    /// What to do in chapter N, and how
-    Hint { chapter: u8 },
-    /// Every exercise and how far you are
+    /// Lay an exercise out in my-lab/ (never overwrites your files): a core
+    /// exercise by name (`sphere`), a chapter's step by number (`2`)
+    Start { exercise: String },
+    /// Build an exercise, run its tests, compare its render with the reference
+    Check { exercise: String },
+    /// Check an exercise again every time you save, until Ctrl-C
+    Watch { exercise: String },
+    /// What to do in an exercise, and how
+    Hint { exercise: String },
+    /// Every exercise, in order, and how far you are
     List,
 }
 
@@ -40,13 +42,11 @@ fn usage(line: String) -> ExitCode {
     ExitCode::from(2)
 }
 
-fn find(number: u8) -> Result<&'static Exercise, ExitCode> {
-    exercise(number).ok_or_else(|| {
-        let first = EXERCISES.first().map_or(1, |e| e.number);
-        let last = EXERCISES.last().map_or(1, |e| e.number);
+fn find(name: &str) -> Result<Item, ExitCode> {
+    path::find(name).ok_or_else(|| {
         usage(format!(
-            "there is no exercise for chapter {number}: the exercises are chapters {first} to {last} \
-             (`cargo run -p learn -- list`)"
+            "there is no exercise `{name}`: the exercises are {} (`cargo run -p learn -- list`)",
+            path::names()
         ))
     })
 }
@@ -68,89 +68,69 @@ fn run(cli: Cli) -> Result<ExitCode, ExitCode> {
     let stdout = std::io::stdout();
     let mut out = stdout.lock();
     match cli.command {
-        Command::Start { chapter } => {
-            let exercise = find(chapter)?;
-            let started = lab
-                .start(exercise, false)
-                .map_err(|e| usage(e.to_string()))?;
-            let folder = started
-                .folder
-                .strip_prefix(&lab.root)
-                .unwrap_or(&started.folder);
-            for name in &started.kept {
-                let _ = writeln!(out, "kept your {}", folder.join(name).display());
-            }
-            if started.written.is_empty() {
-                let _ = writeln!(out, "{} is already there, left as it was", folder.display());
-            } else {
-                let _ = writeln!(out, "wrote {} for {exercise}", folder.display());
-            }
-            let blanked = std::fs::read_to_string(lab.reference_source(exercise))
-                .ok()
-                .and_then(|s| blank(&s).ok());
-            for task in blanked.iter().flat_map(|b| &b.tasks) {
-                let _ = writeln!(
-                    out,
-                    "  write `{}` in {}/{}: {}",
-                    task.name,
-                    folder.display(),
-                    exercise.step,
-                    task.text
-                );
-            }
-            let _ = writeln!(
-                out,
-                "then: cargo run -p learn -- check {chapter}   (or `watch {chapter}` to check on every save)"
-            );
+        Command::Start { exercise } => {
+            let item = find(&exercise)?;
+            start(&lab, item, &mut out)?;
             Ok(ExitCode::SUCCESS)
         }
-        Command::Check { chapter } | Command::Watch { chapter }
-            if exercise(chapter).is_some_and(|e| !lab.folder(e).join("src/lib.rs").is_file()) =>
+        Command::Check { exercise } | Command::Watch { exercise }
+            if path::find(&exercise).is_some_and(|item| !item.started(&lab)) =>
         {
             Err(usage(format!(
-                "no exercise in my-lab/ch{chapter:02}: make it with `cargo run -p learn -- start {chapter}`"
+                "no exercise `{exercise}` in my-lab/: make it with `cargo run -p learn -- start {exercise}`"
             )))
         }
-        Command::Check { chapter } => {
-            let exercise = find(chapter)?;
-            let verdict = check(&lab, exercise, &mut out);
+        Command::Check { exercise } => {
+            let verdict = match find(&exercise)? {
+                Item::Core(core) => check_core(&lab, core, Limits::DEFAULT, &mut out),
+                Item::Chapter(chapter) => check(&lab, chapter, &mut out),
+            };
             Ok(exit_for(&verdict))
         }
-        Command::Watch { chapter } => {
-            let exercise = find(chapter)?;
-            learn::watch::watch(&lab, exercise, &mut out).map_err(|_| ExitCode::from(2))?;
+        Command::Watch { exercise } => {
+            let item = find(&exercise)?;
+            learn::watch::watch(&lab, item, &mut out).map_err(|_| ExitCode::from(2))?;
             Ok(ExitCode::SUCCESS)
         }
-        Command::Hint { chapter } => {
-            let exercise = find(chapter)?;
-            let _ = writeln!(out, "{exercise}: {}", exercise.hint);
+        Command::Hint { exercise } => {
+            let item = find(&exercise)?;
+            let _ = writeln!(out, "{}: {}", item.title(), item.hint());
+            let page = match item {
+                Item::Core(_) => learn::core::PAGE,
+                Item::Chapter(chapter) => chapter.page,
+            };
             let _ = writeln!(
                 out,
-                "The check runs the chapter's tests (stopped after {} s) and renders 160×120 \
-                 (stopped after {} s). The book: {}",
+                "The check runs the exercise's tests (stopped after {} s) and renders 160×120 \
+                 (stopped after {} s). The book: {page}",
                 TEST_TIME_LIMIT.as_secs(),
                 RENDER_TIME_LIMIT.as_secs(),
-                exercise.page
             );
             Ok(ExitCode::SUCCESS)
         }
         Command::List => {
             let progress = lab.progress();
-            for exercise in &EXERCISES {
-                let state = if progress.passed.contains(&exercise.number) {
+            let _ = writeln!(
+                out,
+                "From the empty skeleton (start at `ray`) or from the lab's own start, the ray \
+                 caster given (start at `1`):"
+            );
+            let mut passed = 0;
+            for item in path::items() {
+                let state = if item.passed(&progress) {
+                    passed += 1;
                     "passed"
-                } else if lab.folder(exercise).join("src/lib.rs").is_file() {
+                } else if item.started(&lab) {
                     "started"
                 } else {
                     "not started"
                 };
-                let _ = writeln!(out, "  {:<28} {state}", exercise.to_string());
+                let _ = writeln!(out, "  {:<8} {:<52} {state}", item.name(), item.title());
             }
             let _ = writeln!(
                 out,
-                "{} of {} passed (kept in {}); start one with `cargo run -p learn -- start N`",
-                progress.passed.len(),
-                EXERCISES.len(),
+                "{passed} of {} passed (kept in {}); start one with `cargo run -p learn -- start NAME`",
+                path::PATH.len(),
                 lab.progress_path()
                     .strip_prefix(&lab.root)
                     .unwrap_or(&lab.progress_path())
@@ -159,6 +139,78 @@ fn run(cli: Cli) -> Result<ExitCode, ExitCode> {
             Ok(ExitCode::SUCCESS)
         }
     }
+}
+
+/// `learn start`: lay the exercise out and say what to write where.
+fn start(lab: &Lab, item: Item, out: &mut dyn Write) -> Result<(), ExitCode> {
+    let name = item.name();
+    let (started, tasks, file_of) = match item {
+        Item::Core(core) => {
+            let started = lab
+                .start_core(core, false)
+                .map_err(|e| usage(e.to_string()))?;
+            let mut tasks = Vec::new();
+            for file in core.files {
+                let source = std::fs::read_to_string(lab.root.join("src").join(file)).ok();
+                let blanked = source.and_then(|s| blank(&s).ok());
+                for task in blanked.into_iter().flat_map(|b| b.tasks) {
+                    if core.regions.contains(&task.name.as_str()) {
+                        tasks.push((task, (*file).to_owned()));
+                    }
+                }
+            }
+            (started, tasks, None)
+        }
+        Item::Chapter(chapter) => {
+            let started = lab
+                .start(chapter, false)
+                .map_err(|e| usage(e.to_string()))?;
+            let blanked = std::fs::read_to_string(lab.reference_source(chapter))
+                .ok()
+                .and_then(|s| blank(&s).ok());
+            let tasks = blanked
+                .into_iter()
+                .flat_map(|b| b.tasks)
+                .map(|task| (task, chapter.step.to_owned()))
+                .collect();
+            (started, tasks, Some(chapter))
+        }
+    };
+    let folder = started
+        .folder
+        .strip_prefix(&lab.root)
+        .unwrap_or(&started.folder);
+    for file in &started.kept {
+        let _ = writeln!(out, "kept your {}", folder.join(file).display());
+    }
+    if started.written.is_empty() {
+        let _ = writeln!(out, "`{name}` is already there, left as it was");
+    } else {
+        for file in &started.written {
+            let _ = writeln!(out, "wrote {}", folder.join(file).display());
+        }
+    }
+    for (task, file) in tasks {
+        let _ = writeln!(
+            out,
+            "  write `{}` in {}: {}",
+            task.name,
+            folder.join(file).display(),
+            task.text
+        );
+    }
+    if file_of.is_none() {
+        let _ = writeln!(
+            out,
+            "  (between its marker lines, which the check needs: it uses the reference for every \
+             region you have not passed yet)"
+        );
+    }
+    let _ = writeln!(
+        out,
+        "then: cargo run -p learn -- check {name}   (or `watch {name}` to check on every save)"
+    );
+    Ok(())
 }
 
 /// 0 for a pass, 1 for work still to do, 2 for a check that could not run.
@@ -182,11 +234,12 @@ fn usage_line(error: &clap::Error) -> String {
         .collect();
     let message = message.join(" ");
     let message = message.trim_start_matches("error: ");
-    let first = EXERCISES.first().map_or(1, |e| e.number);
-    let last = EXERCISES.last().map_or(1, |e| e.number);
     let tip = text.lines().map(str::trim).find(|l| l.starts_with("tip:"));
     if error.kind() == clap::error::ErrorKind::MissingRequiredArgument {
-        format!("{message}: the chapter, {first} to {last}, e.g. `check {first}` (see --help)")
+        format!(
+            "{message}: the exercise, one of {}, e.g. `check ray` (see --help)",
+            path::names()
+        )
     } else if let Some(tip) = tip {
         format!("{message} ({tip})")
     } else {

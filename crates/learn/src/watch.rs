@@ -1,4 +1,4 @@
-//! `learn watch N`: check again after every save.
+//! `learn watch NAME`: check again after every save.
 //!
 //! File events come from the operating system (notify, as the chapters'
 //! `--watch` uses). Some file systems never send them (network shares,
@@ -14,9 +14,9 @@ use std::time::{Duration, Instant, SystemTime};
 
 use notify::{RecursiveMode, Watcher};
 
-use crate::check::{Verdict, check};
-use crate::exercise::Exercise;
+use crate::check::{Limits, Verdict, check, check_core};
 use crate::lab::Lab;
+use crate::path::Item;
 
 /// How long the files must stay quiet before the check: editors often
 /// save in several steps (truncate, write, rename).
@@ -29,9 +29,20 @@ const EVENT_PROBE: Duration = Duration::from_secs(2);
 const PROBE_FILE: &str = ".learn-watch-probe";
 
 /// Check, then check again after every save, until Ctrl-C.
-pub fn watch(lab: &Lab, exercise: &Exercise, out: &mut dyn Write) -> Result<(), String> {
-    let folder = lab.folder(exercise);
-    let verdict = check(lab, exercise, out);
+pub fn watch(lab: &Lab, item: Item, out: &mut dyn Write) -> Result<(), String> {
+    let (folder, check) = match item {
+        Item::Core(core) => (
+            lab.dir.join("core"),
+            Box::new(move |out: &mut dyn Write| check_core(lab, core, Limits::DEFAULT, out))
+                as Box<dyn Fn(&mut dyn Write) -> Verdict>,
+        ),
+        Item::Chapter(chapter) => (
+            lab.folder(chapter),
+            Box::new(move |out: &mut dyn Write| check(lab, chapter, out))
+                as Box<dyn Fn(&mut dyn Write) -> Verdict>,
+        ),
+    };
+    let verdict = check(out);
     if verdict == Verdict::NoExercise {
         return Err("nothing to watch".into());
     }
@@ -79,7 +90,7 @@ pub fn watch(lab: &Lab, exercise: &Exercise, out: &mut dyn Write) -> Result<(), 
         if changed_at.is_some_and(|t| t.elapsed() >= DEBOUNCE) {
             changed_at = None;
             let _ = writeln!(out, "\n— saved: checking again —");
-            check(lab, exercise, out);
+            check(out);
             let _ = out.flush();
         }
     }

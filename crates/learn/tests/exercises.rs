@@ -305,8 +305,8 @@ fn a_missing_chapter_is_one_line_that_names_it_and_the_choices() {
     assert_eq!(output.status.code(), Some(2));
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert_eq!(stderr.lines().count(), 1, "{stderr}");
-    assert!(stderr.contains("<CHAPTER>"), "{stderr}");
-    assert!(stderr.contains("1 to 6"), "{stderr}");
+    assert!(stderr.contains("<EXERCISE>"), "{stderr}");
+    assert!(stderr.contains("ray, camera, sphere"), "{stderr}");
 }
 
 #[test]
@@ -315,7 +315,7 @@ fn a_chapter_with_no_exercise_is_one_line_and_exit_code_2() {
     assert_eq!(output.status.code(), Some(2));
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert_eq!(stderr.lines().count(), 1, "{stderr}");
-    assert!(stderr.contains("no exercise for chapter 9"), "{stderr}");
+    assert!(stderr.contains("there is no exercise `9`"), "{stderr}");
 }
 
 #[test]
@@ -329,6 +329,6 @@ fn a_missing_exercise_folder_is_one_line_and_exit_code_2() {
     assert_eq!(output.status.code(), Some(2));
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert_eq!(stderr.lines().count(), 1, "{stderr}");
-    assert!(stderr.contains("no exercise in my-lab/ch02"), "{stderr}");
+    assert!(stderr.contains("no exercise `2` in my-lab/"), "{stderr}");
     assert!(stderr.contains("start 2"), "{stderr}");
 }

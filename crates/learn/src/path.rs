@@ -1,0 +1,105 @@
+//! The whole path, from the empty skeleton to chapter 6: the core's
+//! exercises and the chapters' steps in one order, each with the name
+//! `start`, `check`, `watch` and `hint` take.
+
+use crate::core::{CoreExercise, core_exercise};
+use crate::exercise::{Exercise, exercise};
+use crate::lab::{Lab, Progress};
+
+/// One exercise of the path.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Item {
+    /// A region of the core (`src/`), by name: `sphere`.
+    Core(&'static CoreExercise),
+    /// A chapter's step, by number: `2`.
+    Chapter(&'static Exercise),
+}
+
+/// The path, by name: each core piece just before the first chapter that
+/// shows it in a picture, so that a learner who starts from the empty
+/// skeleton sees their tracer grow chapter by chapter.
+pub const PATH: [&str; 15] = [
+    "ray", "camera", "sphere", "plane", "sky", "1", "srgb", "2", "reflect", "3", "refract", "4",
+    "stack", "5", "6",
+];
+
+/// The exercise called `name`: a core exercise's name or a chapter's number.
+pub fn find(name: &str) -> Option<Item> {
+    if let Some(core) = core_exercise(name) {
+        return Some(Item::Core(core));
+    }
+    let number: u8 = name.trim_start_matches("ch").parse().ok()?;
+    exercise(number).map(Item::Chapter)
+}
+
+/// Every exercise, in the path's order.
+pub fn items() -> impl Iterator<Item = Item> {
+    PATH.iter().filter_map(|name| find(name))
+}
+
+/// The names, as the error messages list them.
+pub fn names() -> String {
+    PATH.join(", ")
+}
+
+impl Item {
+    /// The name `start` and `check` take.
+    pub fn name(&self) -> String {
+        match self {
+            Item::Core(core) => core.name.to_owned(),
+            Item::Chapter(chapter) => chapter.number.to_string(),
+        }
+    }
+
+    /// What it builds, in a few words.
+    pub fn title(&self) -> String {
+        match self {
+            Item::Core(core) => format!("core: {}", core.title),
+            Item::Chapter(chapter) => format!("chapter {}: {}", chapter.number, chapter.title),
+        }
+    }
+
+    pub fn hint(&self) -> &'static str {
+        match self {
+            Item::Core(core) => core.hint,
+            Item::Chapter(chapter) => chapter.hint,
+        }
+    }
+
+    pub fn passed(&self, progress: &Progress) -> bool {
+        match self {
+            Item::Core(core) => progress.core.contains(core.name),
+            Item::Chapter(chapter) => progress.passed.contains(&chapter.number),
+        }
+    }
+
+    pub fn started(&self, lab: &Lab) -> bool {
+        match self {
+            Item::Core(core) => lab.core_started(core),
+            Item::Chapter(chapter) => lab.folder(chapter).join("src/lib.rs").is_file(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::CORE_EXERCISES;
+    use crate::exercise::EXERCISES;
+
+    #[test]
+    fn the_path_holds_every_exercise_once() {
+        let all = items().count();
+        assert_eq!(all, PATH.len());
+        assert_eq!(all, CORE_EXERCISES.len() + EXERCISES.len());
+    }
+
+    #[test]
+    fn a_chapter_is_found_by_its_number_and_a_core_exercise_by_its_name() {
+        assert_eq!(find("2").map(|i| i.name()), Some("2".into()));
+        assert_eq!(find("ch02").map(|i| i.name()), Some("2".into()));
+        assert_eq!(find("refract").map(|i| i.name()), Some("refract".into()));
+        assert_eq!(find("9"), None);
+        assert_eq!(find("spheres"), None);
+    }
+}
