@@ -30,19 +30,9 @@ pub const RATIO_FLOOR: f32 = 1e-5;
 ///
 /// If the images differ in size.
 pub fn log2_ratio(a: &LinearImage, b: &LinearImage) -> Vec<f32> {
-    assert_eq!(
-        (a.width(), a.height()),
-        (b.width(), b.height()),
-        "can only compare images of the same size"
-    );
-    a.pixels()
-        .iter()
-        .zip(b.pixels())
-        .map(|(&a, &b)| {
-            let (a, b) = (luminance(a).max(RATIO_FLOOR), luminance(b).max(RATIO_FLOOR));
-            (b / a).log2()
-        })
-        .collect()
+    compare_luminance(a, b, |a, b| {
+        (b.max(RATIO_FLOOR) / a.max(RATIO_FLOOR)).log2()
+    })
 }
 
 /// Per pixel, how much more light `b` has than `a`: the difference of
@@ -52,6 +42,15 @@ pub fn log2_ratio(a: &LinearImage, b: &LinearImage) -> Vec<f32> {
 ///
 /// If the images differ in size.
 pub fn signed_difference(a: &LinearImage, b: &LinearImage) -> Vec<f32> {
+    compare_luminance(a, b, |a, b| b - a)
+}
+
+/// `compare(luminance of a, luminance of b)` for each pair of pixels.
+fn compare_luminance(
+    a: &LinearImage,
+    b: &LinearImage,
+    compare: impl Fn(f32, f32) -> f32,
+) -> Vec<f32> {
     assert_eq!(
         (a.width(), a.height()),
         (b.width(), b.height()),
@@ -60,7 +59,7 @@ pub fn signed_difference(a: &LinearImage, b: &LinearImage) -> Vec<f32> {
     a.pixels()
         .iter()
         .zip(b.pixels())
-        .map(|(&a, &b)| luminance(b) - luminance(a))
+        .map(|(&a, &b)| compare(luminance(a), luminance(b)))
         .collect()
 }
 
