@@ -11,7 +11,7 @@ use std::time::{Duration, Instant};
 use raylab::{Camera, Scene, Settings};
 use wgpu::util::DeviceExt;
 
-use crate::scene_buffer::Inputs;
+use crate::scene_buffer::{Inputs, PENDING_SIZE, PROGRESS_SIZE};
 use crate::shader::{self, ShaderError, Source};
 
 /// Set (to anything) to make the program find no adapter, as on a
@@ -23,6 +23,11 @@ pub const TILE: u32 = 8;
 
 /// Six counters per image row: five ray kinds and the samples cut short.
 const COUNTERS_PER_ROW: u64 = 6;
+
+/// The most bytes of ray stacks kept between dispatches: a band's rows
+/// are as many as fit (one row at least). More rows per band would mean
+/// fewer, bigger dispatches, but every new buffer is cleared first.
+const STACK_BYTES: u64 = 32 << 20;
 
 /// Why the GPU could not render; each is one line.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
@@ -67,6 +72,9 @@ pub struct Frame {
     pub over_budget: u64,
     /// Uploading the inputs, running the shader, and waiting for it.
     pub dispatch: Duration,
+    /// How many times the shader ran over a band until all its pixels
+    /// were done, summed over the bands.
+    pub dispatches: u32,
     /// Copying the results to memory the CPU can read, and reading them.
     pub readback: Duration,
 }
@@ -141,6 +149,9 @@ impl Gpu {
                 storage(3, false),
                 storage(4, false),
                 storage(5, false),
+                storage(6, false),
+                storage(7, false),
+                storage(8, false),
             ],
         });
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
@@ -228,7 +239,9 @@ impl Gpu {
         let limit = limits
             .max_storage_buffer_binding_size
             .min(limits.max_buffer_size);
-        let row_bytes = u64::from(inputs.width) * 16;
+        // The biggest buffer per pixel is its ray stack.
+        let stack_bytes = stack_bytes(tracer.max_depth);
+        let row_bytes = u64::from(inputs.width) * stack_bytes.max(16);
         if row_bytes > limit {
             return Err(GpuError::TooBig {
                 width: inputs.width,
@@ -236,7 +249,9 @@ impl Gpu {
                 limit,
             });
         }
-        let rows = (limit / row_bytes).min(u64::from(inputs.height));
+        let rows = (limit.min(STACK_BYTES) / row_bytes)
+            .max(1)
+            .min(u64::from(inputs.height));
         self.render_in_bands(tracer, inputs, u32::try_from(rows).unwrap_or(u32::MAX))
     }
 
@@ -260,12 +275,17 @@ impl Gpu {
             counts: [0; 5],
             over_budget: 0,
             dispatch: Duration::ZERO,
+            dispatches: 0,
             readback: Duration::ZERO,
         };
+        let rows_per_band = rows_per_band.max(1).min(inputs.height);
+        let start = Instant::now();
+        let work = self.work_buffers(tracer, u64::from(inputs.width) * u64::from(rows_per_band));
+        frame.dispatch += start.elapsed();
         let mut first_row = 0;
         while first_row < inputs.height {
-            let rows = rows_per_band.max(1).min(inputs.height - first_row);
-            let band = self.render_band(tracer, inputs, first_row, rows)?;
+            let rows = rows_per_band.min(inputs.height - first_row);
+            let band = self.render_band(tracer, inputs, &work, first_row, rows)?;
             frame.pixels.extend(band.pixels);
             frame.maps.extend(band.maps);
             for (total, n) in frame.counts.iter_mut().zip(band.counts) {
@@ -273,10 +293,41 @@ impl Gpu {
             }
             frame.over_budget += band.over_budget;
             frame.dispatch += band.dispatch;
+            frame.dispatches += band.dispatches;
             frame.readback += band.readback;
             first_row += rows;
         }
         Ok(frame)
+    }
+
+    /// The buffers a band's pixels keep their work in between dispatches,
+    /// for bands of up to `pixels` pixels: made once per frame.
+    fn work_buffers(&self, tracer: &Tracer, pixels: u64) -> WorkBuffers {
+        let buffer = |label, size, usage| {
+            self.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(label),
+                size,
+                usage: wgpu::BufferUsages::STORAGE | usage,
+                mapped_at_creation: false,
+            })
+        };
+        let copy_dst = wgpu::BufferUsages::COPY_DST;
+        let copy_src = wgpu::BufferUsages::COPY_SRC;
+        WorkBuffers {
+            progress: buffer("progress", pixels * PROGRESS_SIZE as u64, copy_dst),
+            stacks: buffer(
+                "stacks",
+                pixels * stack_bytes(tracer.max_depth),
+                wgpu::BufferUsages::empty(),
+            ),
+            unfinished: buffer("unfinished", 4, copy_dst | copy_src),
+            unfinished_read: self.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("unfinished readback"),
+                size: 4,
+                usage: wgpu::BufferUsages::MAP_READ | copy_dst,
+                mapped_at_creation: false,
+            }),
+        }
     }
 
     /// One band of `rows` rows from `first_row` down.
@@ -284,6 +335,7 @@ impl Gpu {
         &self,
         tracer: &Tracer,
         inputs: &Inputs,
+        work: &WorkBuffers,
         first_row: u32,
         rows: u32,
     ) -> Result<Frame, GpuError> {
@@ -330,6 +382,9 @@ impl Gpu {
                 (3, &outputs[0]),
                 (4, &outputs[1]),
                 (5, &outputs[2]),
+                (6, &work.progress),
+                (7, &work.stacks),
+                (8, &work.unfinished),
             ]
             .map(|(binding, buffer)| wgpu::BindGroupEntry {
                 binding,
@@ -338,15 +393,27 @@ impl Gpu {
         });
 
         // ANCHOR: dispatch
+        // Every pixel starts at its first sample.
         let mut encoder = self.device.create_command_encoder(&Default::default());
-        {
-            let mut pass = encoder.begin_compute_pass(&Default::default());
-            pass.set_pipeline(&tracer.pipeline);
-            pass.set_bind_group(0, &bind_group, &[]);
-            pass.dispatch_workgroups(inputs.width.div_ceil(TILE), rows.div_ceil(TILE), 1);
+        encoder.clear_buffer(&work.progress, 0, None);
+        let mut dispatches = 0;
+        loop {
+            encoder.clear_buffer(&work.unfinished, 0, None);
+            {
+                let mut pass = encoder.begin_compute_pass(&Default::default());
+                pass.set_pipeline(&tracer.pipeline);
+                pass.set_bind_group(0, &bind_group, &[]);
+                pass.dispatch_workgroups(inputs.width.div_ceil(TILE), rows.div_ceil(TILE), 1);
+            }
+            encoder.copy_buffer_to_buffer(&work.unfinished, 0, &work.unfinished_read, 0, 4);
+            self.queue.submit([encoder.finish()]);
+            dispatches += 1;
+            // Again, until no pixel is left unfinished.
+            if self.read_u32(&work.unfinished_read)? == 0 {
+                break;
+            }
+            encoder = self.device.create_command_encoder(&Default::default());
         }
-        self.queue.submit([encoder.finish()]);
-        self.wait()?;
         let dispatch = start.elapsed();
         // ANCHOR_END: dispatch
 
@@ -399,9 +466,24 @@ impl Gpu {
             counts,
             over_budget,
             dispatch,
+            dispatches,
             readback: start.elapsed(),
         };
         Ok(frame)
+    }
+
+    /// Wait for the GPU, then read the one number in `buffer`.
+    fn read_u32(&self, buffer: &wgpu::Buffer) -> Result<u32, GpuError> {
+        buffer.map_async(wgpu::MapMode::Read, .., |_| {});
+        self.wait()?;
+        let number = {
+            let view = buffer
+                .get_mapped_range(..)
+                .map_err(|e| GpuError::Failed(e.to_string()))?;
+            u32::from_le_bytes([view[0], view[1], view[2], view[3]])
+        };
+        buffer.unmap();
+        Ok(number)
     }
 
     /// Block until the GPU has done all it was given.
@@ -411,6 +493,19 @@ impl Gpu {
             .map(|_| ())
             .map_err(|e| GpuError::Failed(e.to_string()))
     }
+}
+
+/// Where a band's pixels keep their work between dispatches.
+struct WorkBuffers {
+    progress: wgpu::Buffer,
+    stacks: wgpu::Buffer,
+    unfinished: wgpu::Buffer,
+    unfinished_read: wgpu::Buffer,
+}
+
+/// The bytes of one pixel's ray stack, as `tracer.wgsl` sizes it.
+fn stack_bytes(max_depth: u32) -> u64 {
+    u64::from(max_depth) * PENDING_SIZE as u64
 }
 
 /// A message on one line: wgpu's errors run over several.

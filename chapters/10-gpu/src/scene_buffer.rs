@@ -11,12 +11,36 @@ use raylab::{Camera, Scene, Settings, Vec3};
 use crate::like::Features;
 
 /// The bytes of `Params` in `tracer.wgsl`.
-pub const PARAMS_SIZE: usize = 176;
+pub const PARAMS_SIZE: usize = 192;
 /// The bytes of one `Sphere` in `tracer.wgsl`.
 pub const SPHERE_SIZE: usize = 48;
 /// Where `first_row` and `band_rows` sit in `Params`.
 pub const FIRST_ROW_AT: usize = 156;
 pub const BAND_ROWS_AT: usize = 172;
+/// The bytes of one `Progress` and of one `Pending` in `tracer.wgsl`: the
+/// state a pixel keeps between dispatches is one of the first and a stack
+/// of the second.
+pub const PROGRESS_SIZE: usize = 80;
+pub const PENDING_SIZE: usize = 48;
+
+// ANCHOR: steps
+/// Mesa's lavapipe ends every loop of a shader once a group of lanes has
+/// gone round its loops this many times in all, counted from the start of
+/// the invocation (`LP_MAX_TGSI_LOOP_ITERATIONS` in Mesa's gallivm). Any
+/// driver may stop a shader that runs too long; this is lavapipe's rule.
+pub const DRIVER_LOOP_LIMIT: u64 = 65535;
+
+/// The most rays one invocation may trace in one dispatch so that its loops
+/// stay under [`DRIVER_LOOP_LIMIT`]: each ray goes round the sphere loop at
+/// most twice (its nearest hit and its shadow feeler) and round `trace`'s
+/// loop once, with one turn to spare; and `trace`'s loop is tested once
+/// more at its end.
+pub fn steps_per_dispatch(spheres: usize) -> u32 {
+    let per_ray = 2 * spheres as u64 + 2;
+    let steps = (DRIVER_LOOP_LIMIT - 2) / per_ray;
+    u32::try_from(steps.max(1)).unwrap_or(u32::MAX)
+}
+// ANCHOR_END: steps
 
 /// Everything the shader reads, as bytes ready for the GPU's buffers.
 #[derive(Clone, Debug, PartialEq)]
@@ -106,6 +130,9 @@ pub fn pack(
     // The whole image as one band; `Inputs::band` sets another.
     params.vec3(scene.ground.checker.even).u32(0);
     params.vec3(scene.ground.checker.odd).u32(settings.height);
+    // `steps`, and the padding that rounds `Params` up to 16 bytes.
+    params.u32(steps_per_dispatch(spheres.len()));
+    params.u32(0).u32(0).u32(0);
     debug_assert_eq!(params.0.len(), PARAMS_SIZE);
     // ANCHOR_END: params
 
@@ -201,6 +228,8 @@ mod tests {
     fn the_packed_structs_have_the_sizes_the_shader_reads() {
         assert_eq!(wgsl_size("Params"), PARAMS_SIZE);
         assert_eq!(wgsl_size("Sphere"), SPHERE_SIZE);
+        assert_eq!(wgsl_size("Progress"), PROGRESS_SIZE);
+        assert_eq!(wgsl_size("Pending"), PENDING_SIZE);
         let inputs = pack(
             &Scene::lab(),
             &Camera::lab(),
@@ -211,6 +240,18 @@ mod tests {
         assert_eq!(inputs.params.len(), PARAMS_SIZE);
         assert_eq!(inputs.spheres.len(), 5 * SPHERE_SIZE);
         assert_eq!(inputs.samples.len(), 5 * 8);
+    }
+
+    #[test]
+    fn a_dispatch_traces_few_enough_rays_to_stay_under_the_driver_s_loop_limit() {
+        // 500 spheres: a ray goes round the sphere loop up to 1000 times,
+        // so 65 rays (65 · 1002 = 65130) fit and 66 would not.
+        assert_eq!(steps_per_dispatch(500), 65);
+        let loops = |rays: u64| rays * 1002 + 2;
+        assert!(loops(65) <= DRIVER_LOOP_LIMIT && loops(66) > DRIVER_LOOP_LIMIT);
+        // The lab's five spheres: thousands of rays per dispatch.
+        assert_eq!(steps_per_dispatch(5), 5461);
+        assert_eq!(steps_per_dispatch(0), 32766);
     }
 
     #[test]

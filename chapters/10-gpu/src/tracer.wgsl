@@ -40,6 +40,8 @@ struct Params {
     first_row: u32,
     odd: vec3<f32>,
     band_rows: u32,
+    // The most rays an invocation traces in one dispatch (see `main`).
+    steps: u32,
 }
 
 // A sphere and its material, as the storage buffer holds them (48 bytes).
@@ -66,6 +68,11 @@ struct Sphere {
 // once, so they are atomic; one counter per row keeps them from all
 // queuing on the same six.
 @group(0) @binding(5) var<storage, read_write> counts: array<atomic<u32>>;
+// Between dispatches: each pixel's progress and the rays on its stack,
+// and how many pixels are not done yet (see `main`).
+@group(0) @binding(6) var<storage, read_write> progress: array<Progress>;
+@group(0) @binding(7) var<storage, read_write> stacks: array<array<Pending, STACK_SIZE>>;
+@group(0) @binding(8) var<storage, read_write> unfinished: atomic<u32>;
 // ANCHOR_END: inputs
 
 const SHADOWS: u32 = 1u;
@@ -272,134 +279,168 @@ struct Tally {
     rays: u32,
     over_budget: u32,
 }
+
+// Where a pixel's samples stand when a dispatch ends (see `main`).
+struct Progress {
+    // The colours of the samples done, summed.
+    sum: vec3<f32>,
+    // The sample being traced; `params.spp` once the pixel is done.
+    sample: u32,
+    // That sample's colour so far.
+    colour: vec3<f32>,
+    // Its rays waiting on the stack: 0 before it starts and when it ends.
+    len: u32,
+    // Its rays traced so far, and 1 if the ray budget cut it short.
+    rays: u32,
+    over_budget: u32,
+    tally: Tally,
+}
 // ANCHOR_END: stack
 
 // ANCHOR: trace
-// The colour seen along one primary ray: LAB.md's ray-stack loop, with the
-// features of the chapter chosen by `params.features`. The stack is the
-// pixel's, lent to each of its samples in turn.
+// A pixel's samples, one after the other, each traced by LAB.md's ray-stack
+// loop (one ray per turn: pop it, trace it, push the rays it sends on) with
+// the features of the chapter chosen by `params.features`. It stops when
+// the pixel is done, or once this dispatch's `params.steps` rays are
+// traced; `work` holds where it stands, for the next dispatch (see `main`).
 fn trace(
-    origin: vec3<f32>,
-    direction: vec3<f32>,
+    i: u32,
+    j: u32,
     stack: ptr<function, array<Pending, STACK_SIZE>>,
-    tally: ptr<function, Tally>,
-) -> vec3<f32> {
-    (*stack)[0] = Pending(origin, direction, 1.0, 1u, PRIMARY);
-    var len = 1u;
-    var colour = vec3<f32>(0.0);
-    var rays = 0u;
-    var over_budget = false;
-    while len > 0u {
-        len -= 1u;
-        let ray = (*stack)[len];
-        count(tally, ray.kind);
-        rays += 1u;
-        (*tally).deepest = max((*tally).deepest, ray.depth);
-
-        let hit = nearest_hit(ray.origin, ray.direction);
-        if !hit.found {
-            colour += ray.weight * sky(ray.direction);
-            continue;
+    work: ptr<function, Progress>,
+) {
+    var steps = 0u;
+    while work.sample < params.spp && steps < params.steps {
+        if work.len == 0u {
+            // A new sample: its primary ray on the stack.
+            let direction = camera_ray(i, j, samples[work.sample]);
+            (*stack)[0] = Pending(params.eye, direction, 1.0, 1u, PRIMARY);
+            work.len = 1u;
         }
+        trace_ray(stack, work);
+        steps += 1u;
+        if work.len == 0u {
+            // The sample is done: its colour goes to the pixel's sum.
+            work.sum += work.colour;
+            work.tally.rays += work.rays;
+            work.tally.over_budget += work.over_budget;
+            work.colour = vec3<f32>(0.0);
+            work.rays = 0u;
+            work.over_budget = 0u;
+            work.sample += 1u;
+        }
+    }
+}
 
-        // The rays this hit sends on, with the share of the light each
-        // takes as its weight (made the ray's own when it is pushed).
-        var kept = 1.0;
-        var reflected: Pending;
-        var transmitted: Pending;
+// One turn of the loop: the ray on top of the stack.
+fn trace_ray(
+    stack: ptr<function, array<Pending, STACK_SIZE>>,
+    work: ptr<function, Progress>,
+) {
+    work.len -= 1u;
+    let ray = (*stack)[work.len];
+    count(work, ray.kind);
+    work.rays += 1u;
+    work.tally.deepest = max(work.tally.deepest, ray.depth);
 
-        // ANCHOR: reflection
-        // Chapter 3: the mirror share, along the mirror direction.
-        let r = hit.reflection;
-        if (params.features & REFLECTION) != 0u && r > 0.0 {
+    let hit = nearest_hit(ray.origin, ray.direction);
+    if !hit.found {
+        work.colour += ray.weight * sky(ray.direction);
+        return;
+    }
+
+    // The rays this hit sends on, with the share of the light each
+    // takes as its weight (made the ray's own when it is pushed).
+    var kept = 1.0;
+    var reflected: Pending;
+    var transmitted: Pending;
+
+    // ANCHOR: reflection
+    // Chapter 3: the mirror share, along the mirror direction.
+    let r = hit.reflection;
+    if (params.features & REFLECTION) != 0u && r > 0.0 {
+        let d = normalize(reflect(ray.direction, hit.facing_normal));
+        reflected = Pending(hit.point + d * params.epsilon, d, r, 0u, REFLECTED);
+        kept -= r;
+    }
+    // ANCHOR_END: reflection
+
+    // ANCHOR: shadow_feeler
+    // Chapter 2: a feeler towards the sun decides k.
+    var k = SUN_LIT;
+    if (params.features & SHADOWS) != 0u {
+        count(work, SHADOW);
+        work.rays += 1u;
+        let feeler = hit.point + params.to_sun * params.epsilon;
+        if any_hit(feeler, params.to_sun) {
+            k = SUN_IN_SHADOW;
+        }
+    }
+    let local = local_light(hit, k);
+    // ANCHOR_END: shadow_feeler
+
+    // ANCHOR: refraction
+    // Chapter 4: the transmitted share, bent by Snell's law, or
+    // mirrored inside when no refracted direction exists.
+    let t = hit.transmission;
+    if (params.features & TRANSMISSION) != 0u && t > 0.0 {
+        let eta = select(hit.ior, 1.0 / hit.ior, hit.entering);
+        let bent = refract(ray.direction, hit.facing_normal, eta);
+        if all(bent == vec3<f32>(0.0)) {
             let d = normalize(reflect(ray.direction, hit.facing_normal));
-            reflected = Pending(hit.point + d * params.epsilon, d, r, 0u, REFLECTED);
-            kept -= r;
+            transmitted = Pending(hit.point + d * params.epsilon, d, t, 0u, TOTAL_INTERNAL);
+        } else {
+            let d = normalize(bent);
+            transmitted = Pending(hit.point + d * params.epsilon, d, t, 0u, REFRACTED);
         }
-        // ANCHOR_END: reflection
-
-        // ANCHOR: shadow_feeler
-        // Chapter 2: a feeler towards the sun decides k.
-        var k = SUN_LIT;
-        if (params.features & SHADOWS) != 0u {
-            count(tally, SHADOW);
-            rays += 1u;
-            let feeler = hit.point + params.to_sun * params.epsilon;
-            if any_hit(feeler, params.to_sun) {
-                k = SUN_IN_SHADOW;
-            }
-        }
-        let local = local_light(hit, k);
-        // ANCHOR_END: shadow_feeler
-
-        // ANCHOR: refraction
-        // Chapter 4: the transmitted share, bent by Snell's law, or
-        // mirrored inside when no refracted direction exists.
-        let t = hit.transmission;
-        if (params.features & TRANSMISSION) != 0u && t > 0.0 {
-            let eta = select(hit.ior, 1.0 / hit.ior, hit.entering);
-            let bent = refract(ray.direction, hit.facing_normal, eta);
-            if all(bent == vec3<f32>(0.0)) {
-                let d = normalize(reflect(ray.direction, hit.facing_normal));
-                transmitted = Pending(hit.point + d * params.epsilon, d, t, 0u, TOTAL_INTERNAL);
-            } else {
-                let d = normalize(bent);
-                transmitted = Pending(hit.point + d * params.epsilon, d, t, 0u, REFRACTED);
-            }
-            kept -= t;
-        }
-        // ANCHOR_END: refraction
-
-        colour += ray.weight * kept * local;
-
-        // A weight of 0 marks a ray not sent.
-        let sends = reflected.weight > 0.0 || transmitted.weight > 0.0;
-        if ray.depth < params.max_depth && sends {
-            if rays >= RAY_BUDGET {
-                over_budget = true;
-                continue;
-            }
-            // The reflected ray first, so the transmitted one is traced first.
-            push(stack, &len, ray, reflected);
-            push(stack, &len, ray, transmitted);
-        }
+        kept -= t;
     }
-    (*tally).rays += rays;
-    if over_budget {
-        (*tally).over_budget += 1u;
+    // ANCHOR_END: refraction
+
+    work.colour += ray.weight * kept * local;
+
+    // A weight of 0 marks a ray not sent.
+    let sends = reflected.weight > 0.0 || transmitted.weight > 0.0;
+    if ray.depth < params.max_depth && sends {
+        if work.rays >= RAY_BUDGET {
+            work.over_budget = 1u;
+            return;
+        }
+        // The reflected ray first, so the transmitted one is traced first.
+        push(stack, work, ray, reflected);
+        push(stack, work, ray, transmitted);
     }
-    return colour;
 }
 
 // Push a ray sent on from `parent`, one level deeper, with the parent's
 // weight times its share; a share of 0 is a ray not sent.
 fn push(
     stack: ptr<function, array<Pending, STACK_SIZE>>,
-    len: ptr<function, u32>,
+    work: ptr<function, Progress>,
     parent: Pending,
     sent: Pending,
 ) {
-    if sent.weight > 0.0 && *len < STACK_SIZE {
-        (*stack)[*len] = Pending(
+    if sent.weight > 0.0 && work.len < STACK_SIZE {
+        (*stack)[work.len] = Pending(
             sent.origin,
             sent.direction,
             parent.weight * sent.weight,
             parent.depth + 1u,
             sent.kind,
         );
-        *len += 1u;
+        work.len += 1u;
     }
 }
 
 // One more ray of this kind. (A `switch`, not `kinds[kind]`: an array
 // indexed by a number known only at run time must live in memory.)
-fn count(tally: ptr<function, Tally>, kind: u32) {
+fn count(work: ptr<function, Progress>, kind: u32) {
     switch kind {
-        case 0u: { (*tally).primary += 1u; }
-        case 1u: { (*tally).shadow += 1u; }
-        case 2u: { (*tally).reflected += 1u; }
-        case 3u: { (*tally).refracted += 1u; }
-        default: { (*tally).total_internal += 1u; }
+        case 0u: { work.tally.primary += 1u; }
+        case 1u: { work.tally.shadow += 1u; }
+        case 2u: { work.tally.reflected += 1u; }
+        case 3u: { work.tally.refracted += 1u; }
+        default: { work.tally.total_internal += 1u; }
     }
 }
 // ANCHOR_END: trace
@@ -407,24 +448,39 @@ fn count(tally: ptr<function, Tally>, kind: u32) {
 // ANCHOR: pixel
 // One invocation per pixel, in 8 × 8 tiles: the plain average of the
 // pixel's samples, summed in order, in linear light.
+//
+// A driver may stop a shader that runs too long: lavapipe ends every loop
+// once a group of lanes has been round its loops 65535 times in all, and
+// a pixel seen through glass among 500 spheres needs far more. So each
+// dispatch traces at most `params.steps` rays per pixel (the program sets
+// it from the number of spheres), keeps the pixels not done in `progress`
+// and `stacks`, and the program dispatches again until none is left.
 @compute @workgroup_size(8, 8)
 fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     // The tiles overhang the band's right and bottom edges.
     if id.x >= params.width || id.y >= params.band_rows {
         return;
     }
-    let row = params.first_row + id.y;
+    let index = id.y * params.width + id.x;
+    var work = progress[index];
+    if work.sample >= params.spp {
+        return; // done in an earlier dispatch
+    }
     // WGSL clears every variable it makes: made once per pixel, not once
     // per sample, the stack is cleared once.
     var stack: array<Pending, STACK_SIZE>;
-    var tally: Tally;
-    var sum = vec3<f32>(0.0);
-    for (var s = 0u; s < params.spp; s++) {
-        let direction = camera_ray(id.x, row, samples[s]);
-        sum += trace(params.eye, direction, &stack, &tally);
+    if work.len > 0u {
+        stack = stacks[index];
     }
-    let index = id.y * params.width + id.x;
-    pixels[index] = vec4<f32>(sum / f32(params.spp), 1.0);
+    trace(id.x, params.first_row + id.y, &stack, &work);
+    progress[index] = work;
+    if work.sample < params.spp {
+        stacks[index] = stack;
+        atomicAdd(&unfinished, 1u);
+        return;
+    }
+    let tally = work.tally;
+    pixels[index] = vec4<f32>(work.sum / f32(params.spp), 1.0);
     maps[index] = vec2<u32>(tally.deepest, tally.rays);
 
     let counter = id.y * COUNTERS_PER_ROW;

@@ -6,6 +6,7 @@ pub mod antialiasing;
 pub mod book;
 pub mod concepts;
 pub mod extras;
+pub mod gpu_speed;
 pub mod learn_figures;
 pub mod math;
 pub mod measure;
@@ -221,6 +222,14 @@ pub fn make_figures(
     let pairs_path = figures.join("speed-pairs.md");
     save_text(&pairs, &pairs_path)?;
     written.push(pairs_path);
+    // Chapter 10's frames on this machine's GPU adapter, if it has one.
+    let gpu = gpu_speed::measure(size);
+    if let Err(why) = &gpu {
+        println!("workbook: chapter 10's speed table says there is no GPU adapter: {why}");
+    }
+    let gpu_path = figures.join("speed-gpu.md");
+    save_text(&gpu_speed::table(size, &gpu), &gpu_path)?;
+    written.push(gpu_path);
     written.extend(extras::make_extras(&figures.join("extras"), size)?);
     written.extend(antialiasing::make_figures(&figures.join("sampling"), size)?);
     written.extend(learn_figures::make_learn_figures(&figures.join("learn"))?);

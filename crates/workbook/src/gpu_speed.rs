@@ -1,0 +1,151 @@
+//! Chapter 10's frame times on this machine's GPU adapter, measured by the
+//! main job: the lab scene as chapters 1–5 render it, each frame's three
+//! parts apart (dispatch, readback, encoding), naming the adapter and the
+//! processor. Without an adapter the table says so, and the job goes on.
+
+use std::time::Duration;
+
+use ch10_gpu::gpu::Gpu;
+use ch10_gpu::like::Like;
+use ch10_gpu::run::{Framed, render_image};
+use ch10_gpu::shader::Source;
+use raylab::frame::thousands;
+use raylab::{Camera, Sampling, Scene, Settings};
+
+use crate::Size;
+use crate::speed::{ROUNDS, machine, median};
+
+/// One chapter's median frame on the GPU.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GpuTiming {
+    pub like: &'static str,
+    pub rays: u64,
+    pub dispatch: Duration,
+    pub readback: Duration,
+    pub encoding: Duration,
+}
+
+impl GpuTiming {
+    fn total(&self) -> Duration {
+        self.dispatch + self.readback + self.encoding
+    }
+}
+
+/// Each of chapters 1–5's looks at `size`, [`ROUNDS`] warm frames after a
+/// first one that is not counted; the median of each part. `Err` is the
+/// one line that says why there is no table (no adapter, a failed frame).
+pub fn measure(size: Size) -> Result<(String, Vec<GpuTiming>), String> {
+    let gpu = Gpu::new().map_err(|e| e.to_string())?;
+    let scene = (Scene::lab(), Camera::lab());
+    let mut timings = Vec::new();
+    for like in Like::ALL {
+        let (max_depth, spp, _) = like.defaults();
+        let settings = Settings {
+            width: size.width,
+            height: size.height,
+            max_depth,
+            epsilon: 1e-4,
+            sampling: Sampling::new(spp, None, 0).map_err(|e| e.to_string())?,
+        };
+        let tracer = gpu
+            .compile(&Source::built_in(), max_depth)
+            .map_err(|e| e.to_string())?;
+        let frame = || render_image(&gpu, &tracer, like, &settings, &scene, false);
+        let first = frame().map_err(|e| e.to_string())?;
+        let mut frames: Vec<Framed> = Vec::with_capacity(ROUNDS);
+        for _ in 0..ROUNDS {
+            frames.push(frame().map_err(|e| e.to_string())?);
+        }
+        let part = |f: fn(&Framed) -> Duration| median(frames.iter().map(f).collect());
+        timings.push(GpuTiming {
+            like: like.binary(),
+            rays: first.rendered.counts.total(),
+            dispatch: part(|f| f.dispatch),
+            readback: part(|f| f.readback),
+            encoding: part(|f| f.encoding),
+        });
+    }
+    Ok((gpu.adapter.clone(), timings))
+}
+
+/// The table for chapter 10's page, or the line that says why there is none.
+pub fn table(size: Size, measured: &Result<(String, Vec<GpuTiming>), String>) -> String {
+    let (adapter, timings) = match measured {
+        Ok(found) => found,
+        Err(why) => {
+            return format!(
+                "No table: the machine that built this book has no GPU adapter chapter 10 \
+                 could use ({why}).\n"
+            );
+        }
+    };
+    let ms = |d: Duration| d.as_secs_f64() * 1e3;
+    let mut text = String::from(
+        "| like | rays | dispatch | readback | encoding | frame | Mrays/s |\n\
+         |---|---:|---:|---:|---:|---:|---:|\n",
+    );
+    for t in timings {
+        text.push_str(&format!(
+            "| `{}` | {} | {:.1} ms | {:.1} ms | {:.1} ms | {:.1} ms | {:.1} |\n",
+            t.like,
+            thousands(t.rays),
+            ms(t.dispatch),
+            ms(t.readback),
+            ms(t.encoding),
+            ms(t.total()),
+            t.rays as f64 / t.total().as_secs_f64().max(1e-9) / 1e6,
+        ));
+    }
+    text.push_str(&format!(
+        "\n`ch10-gpu --like …` on the lab scene at {} × {}, each chapter's defaults: the median \
+         of {ROUNDS} warm frames in the main job's process. The adapter: {adapter}. The \
+         processor: {}.\n",
+        size.width,
+        size.height,
+        machine()
+    ));
+    text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn without_an_adapter_the_table_says_so_in_one_line() {
+        let size = Size {
+            width: 8,
+            height: 6,
+        };
+        let text = table(size, &Err("no GPU adapter found".to_owned()));
+        assert_eq!(text.lines().count(), 1, "{text}");
+        assert!(text.contains("no GPU adapter found"), "{text}");
+    }
+
+    #[test]
+    fn the_table_names_the_adapter_and_splits_each_frame_in_three() {
+        let size = Size {
+            width: 800,
+            height: 600,
+        };
+        let timing = GpuTiming {
+            like: "ch05-antialiasing",
+            rays: 2_000_000,
+            dispatch: Duration::from_millis(90),
+            readback: Duration::from_millis(4),
+            encoding: Duration::from_millis(6),
+        };
+        let text = table(size, &Ok(("a test adapter".to_owned(), vec![timing])));
+        // 2 million rays in 100 ms: 20 Mrays/s.
+        assert!(
+            text.contains(
+                "| `ch05-antialiasing` | 2,000,000 | 90.0 ms | 4.0 ms | 6.0 ms | 100.0 ms | 20.0 |"
+            ),
+            "{text}"
+        );
+        assert!(
+            text.contains("a test adapter") && text.contains("800 × 600"),
+            "{text}"
+        );
+    }
+}
