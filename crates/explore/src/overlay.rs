@@ -17,6 +17,11 @@ const PANEL: Rgb = [16, 16, 20];
 const TEXT: Rgb = [240, 240, 240];
 const MUTED: Rgb = [170, 175, 185];
 const WARN: Rgb = [255, 170, 90];
+/// The probe's box: its top this many paddings (and the status lines)
+/// down, at most this share of the frame's width, on the side away from
+/// the tree.
+const PROBE_TOP_LINES: f32 = 3.0;
+const PROBE_WIDTH: f32 = 0.46;
 /// The help's column of keys.
 const HELP_KEYS: f32 = 64.0;
 
@@ -89,10 +94,12 @@ fn panels(explorer: &Explorer, width: f32, height: f32) -> Vec<Panel> {
     let lines = status.len();
     panels.extend(lines_panel(PAD, PAD, status, width - 2.0 * PAD));
     if let Some(probe) = explorer.probe() {
-        // Along the bottom, where the ground is, so that the tree and the
-        // spheres stay in sight; the coordinates are left out, as the
-        // tree itself shows where each ray goes.
-        let room = (height * 0.36 / LINE).floor().max(2.0) as usize;
+        // On the right, under the status lines and above the lower third
+        // of the frame, where the ground, the spheres' bottoms and most of
+        // a tree's rays are; the coordinates are left out, as the tree
+        // itself shows where each ray goes.
+        let top = PROBE_TOP_LINES * PAD + LINE * lines as f32;
+        let room = ((height * 2.0 / 3.0 - top - PAD) / LINE).floor().max(2.0) as usize;
         let mut text: Vec<(String, Rgb)> = probe
             .text
             .lines()
@@ -103,8 +110,16 @@ fn panels(explorer: &Explorer, width: f32, height: f32) -> Vec<Panel> {
             text.truncate(room - 1);
             text.push((format!("… {rest} more lines in the terminal"), MUTED));
         }
-        let top = height - PAD - LINE * text.len() as f32 - PAD;
-        panels.extend(lines_panel(PAD, top, text, width - 2.0 * PAD));
+        if let Some(mut panel) = lines_panel(0.0, top, text, width * PROBE_WIDTH) {
+            // On the side of the frame away from the tree.
+            let size = (width as u32, height as u32);
+            let tree_x = crate::tree3d::mean_x(&explorer.camera(), size, probe);
+            panel.x = match tree_x {
+                Some(x) if x < width / 2.0 => (width - PAD - panel.width).max(PAD),
+                _ => PAD,
+            };
+            panels.push(panel);
+        }
     }
     if explorer.knobs.help {
         let widest = HELP
@@ -225,5 +240,36 @@ fn without_coordinates(line: &str) -> String {
             None => line.to_owned(),
         },
         None => line.to_owned(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Input, Loaded};
+
+    #[test]
+    fn a_clicked_pixel_s_text_leaves_the_lower_third_of_the_frame_uncovered() {
+        let mut explorer = Explorer::new(Loaded::lab(), 640, 480);
+        explorer.frame();
+        // The glass sphere's centre: a deep tree, many lines of text.
+        let glass = raylab::Scene::lab().spheres()[1].shape.centre;
+        let (x, y) = raylab::Camera::lab().project(glass, 640, 480).unwrap();
+        let (button, x, y) = (crate::Button::Left, f64::from(x), f64::from(y));
+        explorer.handle(Input::Press { button, x, y });
+        explorer.handle(Input::Release { button, x, y });
+        assert!(explorer.probe().is_some());
+        let boxes = panels(&explorer, 640.0, 480.0);
+        assert_eq!(boxes.len(), 2, "the status lines and the probe's text");
+        // The tree is right of the middle (the glass sphere): the text is on the left.
+        assert_eq!(boxes[1].x, PAD);
+        for panel in boxes {
+            assert!(
+                panel.y + panel.height <= 480.0 * 2.0 / 3.0,
+                "{}",
+                panel.y + panel.height
+            );
+            assert!(panel.x >= 0.0 && panel.x + panel.width <= 640.0);
+        }
     }
 }

@@ -34,6 +34,24 @@ pub fn draw(canvas: &mut Canvas, camera: &Camera, probe: &Probe) {
     }
 }
 
+/// The mean x on screen of the drawn rays' ends, or `None` when none is
+/// in front of the camera: where the tree is, for the text to keep clear of.
+pub fn mean_x(camera: &Camera, size: (u32, u32), probe: &Probe) -> Option<f32> {
+    let (mut sum, mut n) = (0.0, 0.0);
+    for tree in probe.trees.iter().take(DRAWN_TREES) {
+        for ray in &tree.rays {
+            let length = ray.hit.map_or(SKY_STUB, |(_, t)| t);
+            if let Some((from, to)) =
+                project_segment(camera, size, ray.ray.origin, ray.ray.at(length))
+            {
+                sum += from.0 + to.0;
+                n += 2.0;
+            }
+        }
+    }
+    (n > 0.0).then(|| sum / n)
+}
+
 fn draw_ray(canvas: &mut Canvas, camera: &Camera, size: (u32, u32), ray: &TracedRay) {
     let length = ray.hit.map_or(SKY_STUB, |(_, t)| t);
     let Some((from, to)) = project_segment(camera, size, ray.ray.origin, ray.ray.at(length)) else {
