@@ -229,6 +229,17 @@ impl<'s> Bvh<'s> {
         &self.order
     }
 
+    /// The spheres (centre and radius), in the leaves' order.
+    pub fn leaf_spheres(&self) -> &[[f32; 4]] {
+        &self.spheres
+    }
+
+    /// The largest coordinate of any sphere's centre, which sets the
+    /// boxes' widening for rounding ([`COORDINATE_SLACK`]).
+    pub fn scale(&self) -> f32 {
+        self.scale
+    }
+
     /// The bytes the tree keeps beside the scene: its nodes, the spheres'
     /// copies and their indices.
     pub fn bytes(&self) -> usize {
