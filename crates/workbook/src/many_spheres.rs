@@ -37,7 +37,7 @@ pub fn make_figures(
     quiet: bool,
 ) -> Result<Vec<PathBuf>, JobError> {
     // The field as a learner renders it, `--eight` for the main job's
-    // time (the same bytes as without), with its diagrams.
+    // time (the same bytes as without).
     let field = scenes.join("field-500.toml");
     let args = [
         BINARY.to_owned(),
@@ -45,6 +45,8 @@ pub fn make_figures(
         format!("--height={}", size.height),
         format!("--scene={}", field.display()),
         format!("--out={}", dir.display()),
+        // The render alone: its depth sweep would take most of a minute.
+        "--no-diagrams".to_owned(),
     ];
     let chapter = ch09_many_spheres::chapter_eight(Like::AntiAliasing);
     let mut options =
