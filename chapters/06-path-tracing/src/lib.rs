@@ -26,4 +26,4 @@ pub mod sun;
 
 pub use integrator::{Materials, PathTracer, Terms};
 pub use render::{PathRender, PathSettings, render_paths, render_paths_with, render_with};
-pub use run::{Flags, PROGRAM, PathProgram, main, run};
+pub use run::{Flags, PROGRAM, PathProgram, main, main_with_args, run};

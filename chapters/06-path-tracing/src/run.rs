@@ -236,9 +236,18 @@ pub fn report_text(binary: &str, report: &PathReport) -> String {
 /// parse, render, write, report; bad input gives one line on stderr and
 /// exit code 2.
 pub fn main(program: &PathProgram) -> ExitCode {
+    main_with_args(program, std::env::args_os())
+}
+
+/// [`main`], with the command line given (the program's name first): for
+/// a program that takes some flags of its own out first (chapter 9).
+pub fn main_with_args(
+    program: &PathProgram,
+    args: impl IntoIterator<Item = std::ffi::OsString>,
+) -> ExitCode {
     let binary = program.program.binary;
     let command = command(&program.program);
-    cli::main_of(binary, command, std::env::args_os(), |matches| {
+    cli::main_of(binary, command, args, |matches| {
         let usage = |e: clap::Error| CliError::Usage(cli::usage_line(&e));
         let options = CommonFlags::from_arg_matches(matches).map_err(usage)?;
         let flags = Flags::from_arg_matches(matches).map_err(usage)?;

@@ -9,7 +9,7 @@ use raylab::outputs::{Outputs, RowOutputs};
 use raylab::render::Progress;
 use raylab::trace::RayCounts;
 use raylab::{Camera, Keep, RayKind, Rendered, Scene, Settings, Tracer, Vec3};
-use raylab_lanes::SceneX8;
+use raylab_lanes::{SceneQueryX8, SceneX8};
 use rayon::prelude::*;
 
 use crate::EightRays;
@@ -52,6 +52,7 @@ fn count_sample(waves: &Waves, sample: usize, counts: &mut RayCounts) {
 #[cold]
 fn trace_again(
     worker: &Worker<'_, '_>,
+    setup: &Setup,
     camera: &Camera,
     settings: &Settings,
     (i, j, k): (usize, u32, usize),
@@ -61,8 +62,9 @@ fn trace_again(
     let mut waved = RayCounts::default();
     count_sample(worker.waves, sample, &mut waved);
     tally.counts = tally.counts - waved;
-    let mut scalar = Tracer::new(
+    let mut scalar = Tracer::with_query(
         worker.scene,
+        setup.scene.one_ray(),
         worker.step,
         settings.max_depth,
         settings.epsilon,
@@ -103,11 +105,41 @@ pub fn render_waves(
     keep: Keep,
     progress: &dyn Progress,
 ) -> Rendered {
+    render_waves_or_query(scene, None, camera, step, settings, keep, progress)
+}
+
+/// [`render_waves`], with every hit found by `query` (chapter 9's tree)
+/// rather than by testing every sphere: the same bytes.
+pub fn render_waves_with(
+    scene: &Scene,
+    query: &dyn SceneQueryX8,
+    camera: &Camera,
+    step: &EightRays,
+    settings: &Settings,
+    keep: Keep,
+    progress: &dyn Progress,
+) -> Rendered {
+    render_waves_or_query(scene, Some(query), camera, step, settings, keep, progress)
+}
+
+fn render_waves_or_query(
+    scene: &Scene,
+    query: Option<&dyn SceneQueryX8>,
+    camera: &Camera,
+    step: &EightRays,
+    settings: &Settings,
+    keep: Keep,
+    progress: &dyn Progress,
+) -> Rendered {
     let start = Instant::now();
     let features = step.like.features();
+    let mut lanes = SceneX8::new(scene).with_optics(features.reflection, features.transmission);
+    if let Some(query) = query {
+        lanes = lanes.with_query(query);
+    }
     let setup = Setup {
         primary: Primary::new(camera, settings),
-        scene: SceneX8::new(scene).with_optics(features.reflection, features.transmission),
+        scene: lanes,
         light: Light::new(scene),
         features,
         max_depth: settings.max_depth,
@@ -163,7 +195,7 @@ fn render_row(
         for k in 0..spp {
             let sample = i * spp + k;
             let traced = if waves.over_budget(sample) {
-                let scalar = trace_again(worker, camera, settings, (i, j, k), &mut tally);
+                let scalar = trace_again(worker, setup, camera, settings, (i, j, k), &mut tally);
                 deepest = deepest.max(scalar.deepest as u8);
                 rays += scalar.rays;
                 scalar.colour

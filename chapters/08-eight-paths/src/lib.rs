@@ -37,7 +37,7 @@ pub mod window;
 use ch06_path_tracing::PathProgram;
 use raylab_cli::Program;
 
-pub use render::render_eight;
+pub use render::{render_eight, render_eight_with};
 
 /// Chapter 8's program: chapter 6's, with its defaults, rendered eight
 /// paths at a time.

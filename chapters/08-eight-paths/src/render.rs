@@ -3,9 +3,10 @@
 
 use ch06_path_tracing::pixel::RowImages;
 use ch06_path_tracing::{PathRender, PathSettings, PathTracer, render_with};
+use raylab::SceneQuery;
 use raylab::render::Progress;
 use raylab::{Camera, Scene};
-use raylab_lanes::{CameraX8, LANES, SceneX8, SpheresX8, lanes_of, mask_from_bits};
+use raylab_lanes::{CameraX8, LANES, SceneQueryX8, SceneX8, SpheresX8, lanes_of, mask_from_bits};
 use rayon::prelude::*;
 use wide::f32x8;
 
@@ -24,21 +25,38 @@ pub fn render_eight(
     progress: &dyn Progress,
 ) -> PathRender {
     let spheres = SpheresX8::new(scene);
+    let lanes = SceneX8::new(scene);
     render_with(scene, &spheres, settings, |tracer, rows| {
-        render_rows(tracer, camera, settings, progress, rows)
+        render_rows(tracer, &lanes, camera, settings, progress, rows)
+    })
+}
+
+/// [`render_eight`], with every hit found by `query` (chapter 9's tree),
+/// the paths' eight at a time and the photons' one at a time, rather than
+/// by testing every sphere: the same bytes.
+pub fn render_eight_with<Q: SceneQueryX8>(
+    scene: &Scene,
+    query: &Q,
+    camera: &Camera,
+    settings: &PathSettings,
+    progress: &dyn Progress,
+) -> PathRender {
+    let lanes = SceneX8::new(scene).with_query(query);
+    render_with(scene, query, settings, |tracer, rows| {
+        render_rows(tracer, &lanes, camera, settings, progress, rows)
     })
 }
 
 /// Every row of `rows` (row `j`'s images) on every core, telling
 /// `progress` of each row; returns the rays traced and the non-finite samples.
-fn render_rows(
-    tracer: &PathTracer<'_, SpheresX8>,
+fn render_rows<Q: SceneQuery>(
+    tracer: &PathTracer<'_, Q>,
+    scene: &SceneX8,
     camera: &Camera,
     settings: &PathSettings,
     progress: &dyn Progress,
     rows: Vec<RowImages<'_>>,
 ) -> (u64, u64) {
-    let scene = SceneX8::new(tracer.scene);
     let camera = CameraX8::new(camera, settings.width, settings.height);
     rows.into_par_iter()
         .enumerate()
@@ -47,7 +65,7 @@ fn render_rows(
             |(paths, window, starts), (j, mut row)| {
                 let mut rows = Rows {
                     tracer,
-                    scene: &scene,
+                    scene,
                     camera: &camera,
                     settings,
                     paths,
@@ -64,8 +82,8 @@ fn render_rows(
 
 /// What one task needs to trace rows: the scene and camera in lanes, and
 /// its eight paths and window of finished samples, made once per task.
-struct Rows<'a, 's> {
-    tracer: &'a PathTracer<'s, SpheresX8>,
+struct Rows<'a, 's, Q: SceneQuery> {
+    tracer: &'a PathTracer<'s, Q>,
     scene: &'a SceneX8<'s>,
     camera: &'a CameraX8,
     settings: &'a PathSettings,
@@ -75,7 +93,7 @@ struct Rows<'a, 's> {
     starts: &'a mut Starts,
 }
 
-impl Rows<'_, '_> {
+impl<Q: SceneQuery> Rows<'_, '_, Q> {
     // ANCHOR: row
     /// Row `j`'s pixels into `out`: sample `q` of the row is pixel
     /// `q / spp`'s sample `q % spp`; the lanes take them in that order, a

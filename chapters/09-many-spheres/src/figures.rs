@@ -105,8 +105,8 @@ pub fn speed_figure(points: &[SpeedPoint]) -> RgbImage {
             series_colour(1),
             points.iter().map(|p| (shape(p.spheres), p.tree)),
         ))
-        .series(Series::new("∝ 1/N", series_colour(2), one_over_n).without_markers())
-        .series(Series::new("∝ 1/log N", series_colour(3), one_over_log).without_markers())
+        .series(Series::new("shape of 1/N", series_colour(2), one_over_n).without_markers())
+        .series(Series::new("shape of 1/log N", series_colour(3), one_over_log).without_markers())
         .legend(Corner::BottomLeft)
         .render(800, 500)
 }
@@ -149,7 +149,7 @@ pub fn build_time_figure(points: &[(usize, f64)]) -> RgbImage {
         ))
         .series(
             Series::new(
-                "∝ N log N",
+                "shape of N log N",
                 series_colour(2),
                 points
                     .iter()

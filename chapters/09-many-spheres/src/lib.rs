@@ -19,6 +19,7 @@
 
 pub mod aabb;
 pub mod bvh;
+pub mod bvh_x8;
 pub mod field;
 pub mod figures;
 pub mod like;
@@ -28,13 +29,18 @@ use ch02_shadows::Shadows;
 use ch03_reflection::Reflection;
 use ch04_refraction::Refraction;
 use ch05_antialiasing::AntiAliasing;
+use ch06_path_tracing::{PathProgram, PathRender, PathSettings};
+use ch07_eight_rays::EightRays;
+use ch07_eight_rays::render::render_waves_with;
+use ch08_eight_paths::render_eight_with;
 use raylab::camera::Camera;
 use raylab::frame::{Keep, Rendered, Settings};
 use raylab::render::{Progress, render_with_query};
 use raylab::{Hit, Ray, Scene, Step, Surface, Vec3};
-use raylab_cli::Chapter;
+use raylab_cli::{Chapter, Program, Renderer};
 
 pub use bvh::Bvh;
+pub use bvh_x8::BvhX8;
 pub use like::Like;
 
 /// The program's name, which is also its default output folder.
@@ -81,20 +87,75 @@ pub fn render_tree(
 }
 // ANCHOR_END: render
 
+// ANCHOR: eight
+/// Chapter 7's render, eight rays at a time in waves, with every hit
+/// found through the tree, eight rays against each node ([`BvhX8`]).
+pub fn render_tree_waves(
+    scene: &Scene,
+    camera: &Camera,
+    step: &EightRays,
+    settings: &Settings,
+    keep: Keep,
+    progress: &dyn Progress,
+) -> Rendered {
+    let tree = Bvh::build(scene);
+    let lanes = BvhX8::new(&tree);
+    render_waves_with(scene, &lanes, camera, step, settings, keep, progress)
+}
+
+/// Chapter 8's render, eight paths at a time, with every hit found
+/// through the tree: the paths' eight at a time ([`BvhX8`]), the
+/// photons' one at a time.
+pub fn render_tree_paths(
+    scene: &Scene,
+    camera: &Camera,
+    settings: &PathSettings,
+    progress: &dyn Progress,
+) -> PathRender {
+    let tree = Bvh::build(scene);
+    render_eight_with(scene, &BvhX8::new(&tree), camera, settings, progress)
+}
+// ANCHOR_END: eight
+
+/// Chapter 9's program with `--eight`: chapter 7's, tracing as the
+/// chapter `like` does, through the tree.
+pub fn chapter_eight(like: Like) -> Chapter<EightRays> {
+    chapter_with(EightRays { like }, like, render_tree_waves)
+}
+
+/// Chapter 9's program with `--paths`: chapter 8's (chapter 6's flags and
+/// files), through the tree.
+pub const PATHS: PathProgram = PathProgram {
+    program: Program {
+        binary: BINARY,
+        about: "Chapter 9 --paths: chapter 6's path-traced image, to the byte, traced eight paths \
+                at a time as chapter 8 does, every hit found through a bounding volume hierarchy.",
+        max_depth: 10,
+        spp: 256,
+    },
+    render: render_tree_paths,
+};
+
 /// Chapter 9's program, tracing as the chapter `like` does, with its
 /// defaults (chapter 5's when `--like` is not given).
 pub fn chapter(like: Like) -> Chapter<ManySpheres> {
+    chapter_with(ManySpheres { like }, like, render_tree)
+}
+
+fn chapter_with<S: Step>(step: S, like: Like, render: Renderer<S>) -> Chapter<S> {
     let (max_depth, spp, probe) = like.defaults();
     Chapter {
         binary: BINARY,
         about: "Chapter 9, many spheres: every ray's hit found through a bounding volume hierarchy, \
                 to the same bytes as testing every sphere. --like ch01-ray-cast … ch05-antialiasing \
-                traces as that chapter does (default: ch05-antialiasing); --generate-field N \
-                [--seed S] prints a scene file of N random spheres.",
+                traces as that chapter does (default: ch05-antialiasing); --eight traces eight rays \
+                at a time as chapter 7 does; --paths path-traces eight paths at a time as chapter \
+                8 does (chapter 6's flags); --generate-field N [--seed S] prints a scene file of N \
+                random spheres.",
         max_depth,
         spp,
         probe,
-        step: ManySpheres { like },
-        render: render_tree,
+        step,
+        render,
     }
 }

@@ -1,17 +1,21 @@
 //! `cargo run --release -p ch09-many-spheres -- --help`
 //!
-//! Two flags of its own, read before the shared command line sees the
-//! rest: `--like chNN-…` (which chapter's tracing and defaults), and
-//! `--generate-field N [--seed S]`, which prints a scene file instead of
-//! rendering.
+//! Flags of its own, read before the shared command line sees the rest:
+//! `--like chNN-…` (which chapter's tracing and defaults), `--eight`
+//! (chapter 7's waves through the tree), `--paths` (chapter 8's paths
+//! through the tree, with chapter 6's flags), and `--generate-field N
+//! [--seed S]`, which prints a scene file instead of rendering.
 use std::ffi::OsString;
 use std::process::ExitCode;
 
 use ch09_many_spheres::field::{MAX_FIELD, field};
-use ch09_many_spheres::{BINARY, chapter, like::take_like};
+use ch09_many_spheres::{BINARY, PATHS, chapter, chapter_eight, like::take_like};
 
 fn main() -> ExitCode {
     let args: Vec<OsString> = std::env::args_os().collect();
+    let like_given = args
+        .iter()
+        .any(|a| a.to_string_lossy().starts_with("--like"));
     let result = if args.iter().any(|a| {
         let a = a.to_string_lossy();
         a == "--generate-field" || a.starts_with("--generate-field=")
@@ -21,12 +25,31 @@ fn main() -> ExitCode {
             ExitCode::SUCCESS
         })
     } else {
-        take_like(args).map(|(like, rest)| raylab_cli::main_with_args(&chapter(like), rest))
+        take_like(args).and_then(|(like, rest)| {
+            let (eight, rest) = take_flag(rest, "--eight");
+            let (paths, rest) = take_flag(rest, "--paths");
+            match (eight, paths) {
+                (true, true) => Err("--eight and --paths cannot go together: give one".into()),
+                (true, false) => Ok(raylab_cli::main_with_args(&chapter_eight(like), rest)),
+                (false, true) if like_given => {
+                    Err("--like cannot go with --paths, which path-traces as chapter 6 does".into())
+                }
+                (false, true) => Ok(ch06_path_tracing::main_with_args(&PATHS, rest)),
+                (false, false) => Ok(raylab_cli::main_with_args(&chapter(like), rest)),
+            }
+        })
     };
     result.unwrap_or_else(|message| {
         eprintln!("{BINARY}: error: {message}");
         ExitCode::from(2)
     })
+}
+
+/// Take every `flag` out of the arguments; whether there was one.
+fn take_flag(args: Vec<OsString>, flag: &str) -> (bool, Vec<OsString>) {
+    let before = args.len();
+    let rest: Vec<OsString> = args.into_iter().filter(|a| a != flag).collect();
+    (rest.len() < before, rest)
 }
 
 /// `--generate-field N [--seed S]`: the scene file's text.

@@ -1,8 +1,10 @@
 //! The tree finds what the list finds, to the bit: the same nearest hit
 //! (object and distance) and the same answer to "anything at all?", on
-//! random scenes and rays, wild ones included.
+//! random scenes and rays, wild ones included; and so does its search of
+//! eight rays at a time ([`BvhX8`]), lane for lane, against the lanes'
+//! list (`SceneX8`).
 
-use ch09_many_spheres::Bvh;
+use ch09_many_spheres::{Bvh, BvhX8};
 use proptest::prelude::*;
 use raylab::light::{Sky, Sun};
 use raylab::material::Material;
@@ -10,6 +12,7 @@ use raylab::plane::{Checker, Plane};
 use raylab::scene::{Ground, Object, Scene, SceneQuery};
 use raylab::sphere::Sphere;
 use raylab::{Ray, Vec3};
+use raylab_lanes::{LANES, SceneQueryX8, SceneX8, Vec3x8, lanes_of, mask_from_bits};
 
 fn empty_scene(ground_y: f32) -> Scene {
     Scene::new(
@@ -62,6 +65,47 @@ fn assert_same(scene: &Scene, tree: &Bvh, ray: &Ray) -> Result<(), TestCaseError
         "{:?}",
         ray
     );
+    Ok(())
+}
+
+/// Eight lanes of `rays` at a time (the last group filled with its last
+/// ray): the tree's search of eight against the lanes' list, in every
+/// lane, and for shadow rays with every lane asked and with some.
+fn assert_same_x8(scene: &Scene, tree: &Bvh, rays: &[Ray]) -> Result<(), TestCaseError> {
+    let (list, lanes) = (SceneX8::new(scene), BvhX8::new(tree));
+    for group in rays.chunks(LANES) {
+        let ray = |l: usize| group[l.min(group.len() - 1)];
+        let o = Vec3x8::from_lanes(std::array::from_fn(|l| ray(l).origin));
+        let d = Vec3x8::from_lanes(std::array::from_fn(|l| ray(l).direction));
+        let (theirs, ours) = (list.nearest_in_list(o, d), lanes.nearest(o, d));
+        for l in 0..LANES {
+            let bits = |x: wide::f32x8| x.as_array_ref()[l].to_bits();
+            prop_assert_eq!(
+                bits(theirs.t),
+                bits(ours.t),
+                "t, lane {} of {:?}",
+                l,
+                ray(l)
+            );
+            prop_assert_eq!(bits(theirs.object), bits(ours.object), "object, lane {}", l);
+            prop_assert_eq!(bits(theirs.hit), bits(ours.hit), "hit, lane {}", l);
+            prop_assert_eq!(bits(theirs.any), bits(ours.any), "any, lane {}", l);
+        }
+        for asked in [0xff, 0b1010_0101, 0b0000_0001] {
+            let mask = mask_from_bits(asked);
+            let (theirs, ours) = (list.any_in_list(o, d, mask), lanes.any(o, d, mask));
+            for l in lanes_of(asked) {
+                let bit = |x: wide::f32x8| x.as_array_ref()[l].to_bits();
+                prop_assert_eq!(
+                    bit(theirs),
+                    bit(ours),
+                    "blocked, lane {} of {:?}",
+                    l,
+                    ray(l)
+                );
+            }
+        }
+    }
     Ok(())
 }
 
@@ -133,6 +177,7 @@ proptest! {
     ) {
         let scene = scene_of(ground_y, &spheres);
         let tree = Bvh::build(&scene);
+        let mut checked = Vec::new();
         for (origin, d, pick, kind, s) in rays {
             // Some rays start at a sphere's centre, on its surface or aim
             // at it: inside boxes, on faces, at exact ties.
@@ -149,6 +194,10 @@ proptest! {
                 continue;
             }
             assert_same(&scene, &tree, &Ray { origin, direction })?;
+            checked.push(Ray { origin, direction });
+        }
+        if !checked.is_empty() {
+            assert_same_x8(&scene, &tree, &checked)?;
         }
     }
 }
@@ -168,6 +217,7 @@ fn ten_thousand_spheres_at_one_centre_build_a_shallow_tree_and_answer_as_the_lis
         "{}",
         tree.depth()
     );
+    let mut rays = Vec::new();
     for (o, d) in [
         (Vec3::new(0.0, 1.0, 5.0), Vec3::NEG_Z),
         (Vec3::new(0.0, 1.0, 0.0), Vec3::X),
@@ -182,7 +232,9 @@ fn ten_thousand_spheres_at_one_centre_build_a_shallow_tree_and_answer_as_the_lis
         };
         assert_eq!(key(scene.nearest_hit(&ray)), key(tree.nearest_hit(&ray)));
         assert_eq!(scene.any_hit(&ray), SceneQuery::any_hit(&tree, &ray));
+        rays.push(ray);
     }
+    assert_same_x8(&scene, &tree, &rays).unwrap();
 }
 
 #[test]
@@ -199,6 +251,7 @@ fn spheres_far_outside_the_view_and_of_every_size_answer_as_the_list() {
     }
     let scene = scene_of(0.0, &spheres);
     let tree = Bvh::build(&scene);
+    let mut rays = Vec::new();
     for k in 0..2000 {
         let a = k as f32 * 0.618_034;
         let d = Vec3::new(a.sin() * 0.5, (a * 1.3).cos() * 0.5, -1.0).normalize();
@@ -208,7 +261,9 @@ fn spheres_far_outside_the_view_and_of_every_size_answer_as_the_list() {
         };
         assert_eq!(key(scene.nearest_hit(&ray)), key(tree.nearest_hit(&ray)));
         assert_eq!(scene.any_hit(&ray), SceneQuery::any_hit(&tree, &ray));
+        rays.push(ray);
     }
+    assert_same_x8(&scene, &tree, &rays).unwrap();
 }
 
 #[test]
@@ -223,6 +278,7 @@ fn a_tiny_sphere_far_away_is_hit_by_the_tree_wherever_the_list_says_so() {
     let scene = scene_of(-10.0, &[sphere]);
     let tree = Bvh::build(&scene);
     let mut hits = 0;
+    let mut rays = Vec::new();
     for i in -200..=200 {
         for j in -20..=20 {
             let target = sphere.centre + Vec3::new(i as f32 * 1e-4, j as f32 * 1e-3, 0.0);
@@ -238,7 +294,9 @@ fn a_tiny_sphere_far_away_is_hit_by_the_tree_wherever_the_list_says_so() {
             );
             assert_eq!(key(scene.nearest_hit(&ray)), key(tree.nearest_hit(&ray)));
             assert_eq!(scene.any_hit(&ray), SceneQuery::any_hit(&tree, &ray));
+            rays.push(ray);
         }
     }
     assert!(hits > 0);
+    assert_same_x8(&scene, &tree, &rays).unwrap();
 }

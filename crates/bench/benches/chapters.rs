@@ -286,24 +286,31 @@ fn rays_per_pixel(c: &mut Criterion) {
 }
 
 /// Chapter 9: rays per second against the number of spheres, every
-/// sphere tested (chapter 5's own render) against the tree (chapter 9's,
-/// its build included), interleaved N by N, on seeded fields of spheres
-/// at chapter 5's settings, 400 × 300. Testing every one of 5,000 or
-/// 10,000 spheres takes seconds a render, so the list is timed there at
-/// 100 × 75, the same view with a sixteenth of the rays: its rays per
-/// second hardly depend on the image size. Then the tree's build over
-/// 10,000 spheres (one core: the build is sequential) and its bytes per
-/// sphere, and the lab scene through chapter 9 against chapter 5.
+/// sphere tested against the tree, one ray at a time and eight: chapter 5
+/// (the list), chapter 7 (the list, in waves), chapter 9 (the tree) and
+/// chapter 9 `--eight` (the tree, in chapter 7's waves), in two rounds over every
+/// N, on seeded fields of spheres at chapter 5's settings, 400 × 300, the
+/// tree's build included. Testing every one of 5,000 or 10,000 spheres
+/// takes seconds a render, so the list is timed there at 100 × 75, the same
+/// view with a sixteenth of the rays: its rays per second hardly depend on
+/// the image size. Then the tree's build over 1,000 and 10,000 spheres (one
+/// core: the build is sequential) and its bytes per sphere, and the lab
+/// scene through chapter 9 against chapter 5.
 /// `cargo bench -p raylab-bench -- "many spheres"`
 fn many_spheres(c: &mut Criterion) {
     use ch09_many_spheres::figures::{chapter5_settings, field_scene};
-    use ch09_many_spheres::{Bvh, ManySpheres, render_tree};
+    use ch09_many_spheres::{Bvh, ManySpheres, render_tree, render_tree_waves};
     let step = ManySpheres {
         like: Like::AntiAliasing,
     };
-    for n in [5, 50, 500, 5_000, 10_000] {
+    let eight = ch07_eight_rays::EightRays {
+        like: Like::AntiAliasing,
+    };
+    // Two rounds over every N, so that each pair is timed twice, minutes
+    // apart: the machine's drift shows as the rounds' difference.
+    for (round, n) in (1..=2).flat_map(|r| [5, 50, 500, 5_000, 10_000].map(|n| (r, n))) {
         let (scene, camera) = field_scene(n);
-        let mut group = c.benchmark_group(format!("many spheres {n}"));
+        let mut group = c.benchmark_group(format!("many spheres {n} round {round}"));
         group.sampling_mode(SamplingMode::Flat);
         group.sample_size(10);
         group.warm_up_time(Duration::from_millis(500));
@@ -313,32 +320,54 @@ fn many_spheres(c: &mut Criterion) {
         } else {
             big
         };
-        for (name, settings, tree) in [("list", list_settings, false), ("tree", big, true)] {
-            let render = || {
-                let draw: raylab_cli::Renderer<ManySpheres> =
-                    if tree { render_tree } else { render };
-                draw(&scene, &camera, &step, &settings, Keep::IMAGE, &NoProgress)
+        let variants: [(&str, Settings, bool, bool); 4] = [
+            ("ch05 list", list_settings, false, false),
+            ("ch07 list", list_settings, false, true),
+            ("ch09 tree", big, true, false),
+            ("ch09 --eight tree", big, true, true),
+        ];
+        for (name, settings, tree, lanes) in variants {
+            let draw = || match (tree, lanes) {
+                (false, false) => {
+                    render(&scene, &camera, &step, &settings, Keep::IMAGE, &NoProgress)
+                }
+                (true, false) => {
+                    render_tree(&scene, &camera, &step, &settings, Keep::IMAGE, &NoProgress)
+                }
+                (false, true) => ch07_eight_rays::render::render_waves(
+                    &scene,
+                    &camera,
+                    &eight,
+                    &settings,
+                    Keep::IMAGE,
+                    &NoProgress,
+                ),
+                (true, true) => {
+                    render_tree_waves(&scene, &camera, &eight, &settings, Keep::IMAGE, &NoProgress)
+                }
             };
-            group.throughput(Throughput::Elements(render().counts.total()));
+            group.throughput(Throughput::Elements(draw().counts.total()));
             group.bench_function(
                 format!("{name} {}x{}", settings.width, settings.height),
-                |b| b.iter(render),
+                |b| b.iter(draw),
             );
         }
         group.finish();
     }
-    let (scene, _) = field_scene(10_000);
-    let tree = Bvh::build(&scene);
-    eprintln!(
-        "many spheres: the tree over 10,000 spheres: {} nodes, depth {}, {:.1} bytes per sphere",
-        tree.nodes().len(),
-        tree.depth(),
-        tree.bytes() as f64 / 10_000.0
-    );
-    let mut group = c.benchmark_group("many spheres build");
-    group.sample_size(20);
-    group.bench_function("build 10000", |b| b.iter(|| Bvh::build(&scene)));
-    group.finish();
+    for n in [1_000, 10_000] {
+        let (scene, _) = field_scene(n);
+        let tree = Bvh::build(&scene);
+        eprintln!(
+            "many spheres: the tree over {n} spheres: {} nodes, depth {}, {:.1} bytes per sphere",
+            tree.nodes().len(),
+            tree.depth(),
+            tree.bytes() as f64 / n as f64
+        );
+        let mut group = c.benchmark_group("many spheres build");
+        group.sample_size(20);
+        group.bench_function(format!("build {n}"), |b| b.iter(|| Bvh::build(&scene)));
+        group.finish();
+    }
     let nine = ch09_many_spheres::chapter(Like::AntiAliasing);
     for round in 1..=3 {
         let mut group = c.benchmark_group(format!("many spheres lab round {round}"));

@@ -11,7 +11,7 @@
 
 use std::f32::consts::PI;
 
-use raylab::scene::Object;
+use raylab::scene::{Object, SceneQuery};
 use raylab::{Hit, Ray, Scene, Vec3};
 use wide::{CmpEq, CmpGe, CmpLt, CmpNe, f32x8};
 
@@ -48,7 +48,24 @@ pub struct SceneX8<'s> {
     checker_even: (Vec3x8, Vec3x8),
     checker_odd: (Vec3x8, Vec3x8),
     spheres: Vec<SphereX8>,
+    /// Where the rays' hits are found, if not by testing every sphere in
+    /// turn ([`SceneX8::with_query`]).
+    query: Option<&'s dyn SceneQueryX8>,
 }
+
+// ANCHOR: query
+/// Another way for eight rays to find what [`SceneX8::nearest_in_list`]
+/// and [`SceneX8::any_in_list`] find, lane for lane and to the bit:
+/// chapter 9's tree of boxes. It answers one ray's questions too (a
+/// [`SceneQuery`]), for the rare ray a tracer follows alone.
+pub trait SceneQueryX8: SceneQuery + std::fmt::Debug {
+    /// The nearest hit of eight rays, as [`SceneX8::nearest_in_list`].
+    fn nearest(&self, o: Vec3x8, d: Vec3x8) -> Hits;
+    /// Whether eight shadow rays are blocked, in the lanes of `asked`, as
+    /// [`SceneX8::any_in_list`].
+    fn any(&self, o: Vec3x8, d: Vec3x8, asked: f32x8) -> f32x8;
+}
+// ANCHOR_END: query
 
 /// What eight rays hit, lane by lane.
 #[derive(Clone, Copy, Debug)]
@@ -110,6 +127,24 @@ impl<'s> SceneX8<'s> {
             checker_even: with_over_pi(scene.ground.checker.even),
             checker_odd: with_over_pi(scene.ground.checker.odd),
             spheres,
+            query: None,
+        }
+    }
+
+    /// The same scene, with every ray's hits found by `query` (chapter 9's
+    /// tree) instead of by testing every sphere: the same answers, faster
+    /// when there are many spheres.
+    pub fn with_query(mut self, query: &'s dyn SceneQueryX8) -> Self {
+        self.query = Some(query);
+        self
+    }
+
+    /// What a tracer that follows one ray at a time should ask: the
+    /// query, if the scene was given one, else the scene's own list.
+    pub fn one_ray(&self) -> &'s dyn SceneQuery {
+        match self.query {
+            Some(query) => query,
+            None => self.scene,
         }
     }
 
@@ -145,13 +180,24 @@ impl<'s> SceneX8<'s> {
         sphere_hits(s.centre, s.radius_squared, o, d)
     }
 
+    /// The nearest hit of eight rays, and whether each meets anything at
+    /// all: through the query if the scene has one, else
+    /// [`SceneX8::nearest_in_list`].
+    #[inline]
+    pub fn nearest(&self, o: Vec3x8, d: Vec3x8) -> Hits {
+        match self.query {
+            Some(query) => query.nearest(o, d),
+            None => self.nearest_in_list(o, d),
+        }
+    }
+
     // ANCHOR: nearest
     /// The nearest hit of eight rays: the plane, then every sphere in
     /// order, a strictly nearer hit replacing the best so far (ties go to
     /// the earlier object, as in `Scene::nearest_hit`); and whether each
     /// ray meets anything at all, as `Scene::any_hit` asks.
     #[inline]
-    pub fn nearest(&self, o: Vec3x8, d: Vec3x8) -> Hits {
+    pub fn nearest_in_list(&self, o: Vec3x8, d: Vec3x8) -> Hits {
         let (t_plane, on_plane) = self.plane(o, d);
         let mut t = on_plane.blend(t_plane, f32x8::splat(f32::INFINITY));
         let mut object = on_plane.blend(f32x8::splat(GROUND), f32x8::splat(NOTHING));
@@ -175,10 +221,21 @@ impl<'s> SceneX8<'s> {
     // ANCHOR_END: nearest
 
     /// Whether each of eight shadow rays meets anything at all, in the
+    /// lanes of `asked`: through the query if the scene has one, else
+    /// [`SceneX8::any_in_list`].
+    #[inline]
+    pub fn any(&self, o: Vec3x8, d: Vec3x8, asked: f32x8) -> f32x8 {
+        match self.query {
+            Some(query) => query.any(o, d, asked),
+            None => self.any_in_list(o, d, asked),
+        }
+    }
+
+    /// Whether each of eight shadow rays meets anything at all, in the
     /// lanes of `asked` (the others' answers may be wrong): it stops as
     /// soon as every lane asked about is known to be blocked.
     #[inline]
-    pub fn any(&self, o: Vec3x8, d: Vec3x8, asked: f32x8) -> f32x8 {
+    pub fn any_in_list(&self, o: Vec3x8, d: Vec3x8, asked: f32x8) -> f32x8 {
         let mut blocked = self.plane(o, d).1;
         for sphere in &self.spheres {
             if (asked & !blocked).none() {
@@ -203,15 +260,18 @@ impl<'s> SceneX8<'s> {
         };
         let (mut reflection, mut transmission) = (f32x8::ZERO, f32x8::ZERO);
         let (mut ior, mut chooses) = (f32x8::ONE, f32x8::ZERO);
-        // Each lane picks its own sphere's numbers: one blend per sphere,
-        // where a scalar tracer would index an array.
-        for (k, s) in self.spheres.iter().enumerate() {
-            let mine = hits.object.cmp_eq(f32x8::splat(k as f32 + 1.0));
-            // Divergence: most groups hit one or two of the objects; the
-            // spheres that no lane hit have nothing to hand over.
-            if mine.none() {
-                continue;
-            }
+        // Each lane picks its own sphere's numbers: one blend per sphere
+        // hit, where a scalar tracer would index an array. The spheres are
+        // taken from the lanes themselves (the lowest lane not yet served
+        // names the next), so the work grows with the spheres these eight
+        // rays hit, one or two in most groups, not with the scene's.
+        let mut unserved = (hits.hit & !on_ground).move_mask() as u32;
+        while unserved != 0 {
+            let lane = unserved.trailing_zeros() as usize;
+            let number = hits.object.as_array_ref()[lane];
+            let mine = hits.object.cmp_eq(f32x8::splat(number));
+            unserved &= !(mine.move_mask() as u32);
+            let s = &self.spheres[number as usize - 1];
             centre = Vec3x8::select(mine, s.centre, centre);
             albedo = Vec3x8::select(mine, s.albedo, albedo);
             albedo_over_pi = Vec3x8::select(mine, s.albedo_over_pi, albedo_over_pi);

@@ -8,6 +8,7 @@ pub mod concepts;
 pub mod extras;
 pub mod gpu_speed;
 pub mod learn_figures;
+pub mod many_spheres;
 pub mod math;
 pub mod measure;
 pub mod path_tracing;
@@ -246,6 +247,12 @@ pub fn make_figures(
     );
     written.extend(concepts::make_concepts(&figures.join("concepts"))?);
     written.extend(waves::make_figures(&figures.join("waves"), size)?);
+    written.extend(many_spheres::make_figures(
+        &figures.join(ch09_many_spheres::BINARY),
+        scenes,
+        size,
+        quiet,
+    )?);
     written.extend(extras::make_scene_figures(
         &figures.join("scenes"),
         scenes,

@@ -1,0 +1,166 @@
+//! Chapter 9's figures and numbers: a field of 500 spheres rendered by
+//! chapter 9, the tree's boxes over it, the boxes each pixel's ray tested,
+//! rays per second against the number of spheres, and the build time.
+
+use std::path::{Path, PathBuf};
+
+use ch09_many_spheres::figures::{
+    SpeedPoint, build_time_figure, measure_build, measure_speed, speed_figure, tree_figure,
+    visits_figure,
+};
+use ch09_many_spheres::{BINARY, Bvh, Like};
+use raylab::frame::thousands;
+use raylab_cli::output::{save_png, save_text};
+use raylab_cli::{self as cli, CliError, Options};
+
+use crate::{JobError, Size, speed};
+
+/// The sizes of field the speed figure measures.
+pub const SPEED_COUNTS: [usize; 5] = [5, 50, 500, 5_000, 10_000];
+
+/// The image the speed figure renders, list and tree alike: small, since
+/// testing each of 10,000 spheres for every ray takes seconds even here.
+pub const SPEED_SIZE: Size = Size {
+    width: 120,
+    height: 90,
+};
+
+/// The sizes of field whose build the build-time figure measures.
+pub const BUILD_COUNTS: [usize; 6] = [10, 100, 300, 1_000, 3_000, 10_000];
+
+/// Every figure of chapter 9's page, into `dir`; returns the files.
+/// `scenes` is the folder of scene files.
+pub fn make_figures(
+    dir: &Path,
+    scenes: &Path,
+    size: Size,
+    quiet: bool,
+) -> Result<Vec<PathBuf>, JobError> {
+    // The field as a learner renders it, `--eight` for the main job's
+    // time (the same bytes as without).
+    let field = scenes.join("field-500.toml");
+    let args = [
+        BINARY.to_owned(),
+        format!("--width={}", size.width),
+        format!("--height={}", size.height),
+        format!("--scene={}", field.display()),
+        format!("--out={}", dir.display()),
+        // The render alone: its depth sweep would take most of a minute.
+        "--no-diagrams".to_owned(),
+    ];
+    let chapter = ch09_many_spheres::chapter_eight(Like::AntiAliasing);
+    let mut options =
+        Options::parse_for(&chapter, args).map_err(|e| CliError::Usage(e.to_string()))?;
+    options.common.quiet = quiet;
+    let report = cli::run(&chapter, &options)?;
+    if !quiet {
+        cli::print_report(&chapter, &options, &report);
+    }
+    let mut written = report.written.clone();
+    let (scene, camera) = raylab_cli::scene_file::load(&field).map_err(CliError::from)?;
+
+    let mut save = |name: &str, image: &image::RgbImage| -> Result<(), JobError> {
+        let path = dir.join(name);
+        save_png(image, &path)?;
+        written.push(path);
+        Ok(())
+    };
+    save(
+        "tree.png",
+        &tree_figure(&scene, &camera, &report.rendered.srgb, 4),
+    )?;
+    save(
+        "visits.png",
+        &visits_figure(&scene, &camera, size.width / 2, size.height / 2),
+    )?;
+    let points = measure_speed(&SPEED_COUNTS, SPEED_SIZE.width, SPEED_SIZE.height);
+    save("speed.png", &speed_figure(&points))?;
+    let builds = measure_build(&BUILD_COUNTS, 5);
+    save("build-time.png", &build_time_figure(&builds))?;
+
+    let (big, _) = ch09_many_spheres::figures::field_scene(10_000);
+    let tree = Bvh::build(&big);
+    let text = numbers_text(&points, &builds, &tree, &speed::machine());
+    let path = dir.join("numbers.md");
+    save_text(&text, &path)?;
+    written.push(path);
+    Ok(written)
+}
+
+/// The page's numbers, as the main job measured them on this machine: a
+/// table of rays per second, list against tree, the build times, and the
+/// tree's size over 10,000 spheres.
+pub fn numbers_text(
+    points: &[SpeedPoint],
+    builds: &[(usize, f64)],
+    tree: &Bvh,
+    machine: &str,
+) -> String {
+    let mut text = String::from(
+        "| spheres | every sphere tested (Mrays/s) | the tree (Mrays/s) | tree ÷ list |\n\
+         |---:|---:|---:|---:|\n",
+    );
+    for p in points {
+        text.push_str(&format!(
+            "| {} | {:.3} | {:.3} | {:.1} |\n",
+            thousands(p.spheres as u64),
+            p.list,
+            p.tree,
+            p.tree / p.list
+        ));
+    }
+    let spheres = tree.order().len().max(1);
+    let build = |n: usize| {
+        builds
+            .iter()
+            .find(|(count, _)| *count == n)
+            .map_or("—".to_owned(), |(_, ms)| format!("{ms:.2} ms"))
+    };
+    text.push_str(&format!(
+        "\nOne render of each (the tree's build included) at chapter 5's settings, {}×{}, \
+         on {machine}. The tree over {} spheres took {} to build on one core \
+         ({} for 1,000; the best of five), and keeps {} nodes, {:.1} bytes per sphere, {} \
+         levels deep.\n",
+        SPEED_SIZE.width,
+        SPEED_SIZE.height,
+        thousands(spheres as u64),
+        build(spheres),
+        build(1_000),
+        thousands(tree.nodes().len() as u64),
+        tree.bytes() as f64 / spheres as f64,
+        tree.depth()
+    ));
+    text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_numbers_give_each_field_a_row_and_name_the_machine() {
+        let points = [
+            SpeedPoint {
+                spheres: 5,
+                list: 10.0,
+                tree: 5.0,
+            },
+            SpeedPoint {
+                spheres: 10_000,
+                list: 0.01,
+                tree: 2.0,
+            },
+        ];
+        let (scene, _) = ch09_many_spheres::figures::field_scene(40);
+        let tree = Bvh::build(&scene);
+        let text = numbers_text(&points, &[(40, 0.25), (1_000, 1.5)], &tree, "a test CPU");
+        assert!(text.contains("| 5 | 10.000 | 5.000 | 0.5 |"), "{text}");
+        assert!(
+            text.contains("| 10,000 | 0.010 | 2.000 | 200.0 |"),
+            "{text}"
+        );
+        assert!(text.contains("40 spheres took 0.25 ms"), "{text}");
+        assert!(text.contains("1.50 ms for 1,000"), "{text}");
+        assert!(text.contains("a test CPU"), "{text}");
+    }
+}
