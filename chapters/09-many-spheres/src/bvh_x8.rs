@@ -23,7 +23,7 @@
 use raylab::scene::{Hit, SceneQuery};
 use raylab::{Ray, Vec3};
 use raylab_lanes::{GROUND, Hits, NOTHING, SceneQueryX8, Vec3x8, plane_hits, sphere_hits};
-use wide::{CmpEq, CmpLe, CmpLt, CmpNe, f32x8};
+use wide::{CmpEq, CmpLe, CmpLt, f32x8};
 
 use crate::bvh::{Bvh, COORDINATE_SLACK, DISTANCE_SLACK, MAX_DEPTH, Node};
 
@@ -178,13 +178,7 @@ impl SceneQueryX8 for BvhX8<'_> {
                 len += 2;
             }
         }
-        let hit = object.cmp_ne(f32x8::splat(NOTHING));
-        Hits {
-            t,
-            object,
-            hit,
-            any,
-        }
+        Hits::found(t, object, any)
     }
     // ANCHOR_END: nearest
 

@@ -79,6 +79,20 @@ pub struct Hits {
     pub any: f32x8,
 }
 
+impl Hits {
+    /// The result of a nearest-hit search: each lane's distance and object
+    /// ([`NOTHING`] where it found none), and whether it met anything.
+    #[inline]
+    pub fn found(t: f32x8, object: f32x8, any: f32x8) -> Hits {
+        Hits {
+            t,
+            object,
+            hit: object.cmp_ne(f32x8::splat(NOTHING)),
+            any,
+        }
+    }
+}
+
 /// Everything the shading needs about eight hits (LAB.md's hit record).
 /// Lanes without a hit hold numbers too, which the caller's masks leave
 /// unread.
@@ -210,13 +224,7 @@ impl<'s> SceneX8<'s> {
             t = nearer.blend(t_sphere, t);
             object = nearer.blend(f32x8::splat(k as f32 + 1.0), object);
         }
-        let hit = object.cmp_ne(f32x8::splat(NOTHING));
-        Hits {
-            t,
-            object,
-            hit,
-            any,
-        }
+        Hits::found(t, object, any)
     }
     // ANCHOR_END: nearest
 
