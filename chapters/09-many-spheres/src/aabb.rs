@@ -1,7 +1,28 @@
 //! Axis-aligned boxes, and the slab test: where a ray is inside a box.
 
+use glam::BVec3A;
 use raylab::Vec3;
 use raylab::sphere::Sphere;
+
+/// A ray made ready for many slab tests: where it starts, `1/d` per axis,
+/// and the axes it runs backwards along (`d < 0`, or `−0`).
+#[derive(Clone, Copy, Debug)]
+pub struct SlabRay {
+    pub origin: Vec3,
+    pub inverse: Vec3,
+    pub backwards: BVec3A,
+}
+
+impl SlabRay {
+    pub fn new(origin: Vec3, direction: Vec3) -> SlabRay {
+        let inverse = direction.recip();
+        SlabRay {
+            origin,
+            inverse,
+            backwards: inverse.cmplt(Vec3::ZERO),
+        }
+    }
+}
 
 /// A box whose faces are perpendicular to the axes: every point `p` with
 /// `min ≤ p ≤ max` in each coordinate. Boxes are closed (their faces belong
@@ -67,46 +88,31 @@ impl Aabb {
     // ANCHOR_END: surface_area
 
     // ANCHOR: slab
-    /// Where the ray `origin + t·d` is inside the box widened by `pad` on
-    /// every side, clipped to `t_min ≤ t ≤ t_max`: the entry distance, or
-    /// `None` if that stretch of the ray misses it.
+    /// Where the ray is inside the box widened by `pad` on every side,
+    /// clipped to `t_min ≤ t ≤ t_max`: the entry distance, or `None` if that
+    /// stretch of the ray misses it.
     ///
-    /// `inverse` is `1/d` per axis. A box is the overlap of three slabs
-    /// (`min.x ≤ x ≤ max.x`, and so on); the ray is in a slab between the
-    /// two distances where it crosses its planes, and in the box where it
-    /// is in all three at once.
+    /// A box is the overlap of three slabs (`min.x ≤ x ≤ max.x`, and so on);
+    /// the ray is in a slab between the two distances where it crosses its
+    /// planes, and in the box where it is in all three at once. Along an
+    /// axis it runs backwards on, it crosses the `max` plane first.
     ///
     /// Two cases need care. Where `d.x = 0` the ray never crosses the x
     /// planes: `1/d.x` is ±∞ and the distances are ±∞, which says "always
     /// inside" or "never inside", as it should. But a ray that runs exactly
     /// *in* one of the planes gives `0 · ∞ = NaN`: that ray lies in the
-    /// (closed) slab, so a slab whose distances are not both numbers sets no
-    /// limit. The same rule makes a NaN ray visit every box, which is slow
-    /// but never wrong: the sphere tests then find nothing, as the list does.
+    /// (closed) slab, so that distance must set no limit. `f32::max` and
+    /// `f32::min` do just that: given a NaN, they return the other number.
+    /// The same rule makes a NaN ray visit every box, which is slow but
+    /// never wrong: the sphere tests then find nothing, as the list does.
     #[inline]
-    pub fn slab_test(
-        &self,
-        origin: Vec3,
-        inverse: Vec3,
-        pad: f32,
-        t_min: f32,
-        t_max: f32,
-    ) -> Option<f32> {
-        let t0 = (self.min - pad - origin) * inverse;
-        let t1 = (self.max + pad - origin) * inverse;
-        let (mut enter, mut leave) = (t_min, t_max);
-        for axis in 0..3 {
-            let (a, b) = (t0[axis], t1[axis]);
-            let (near, far) = if a <= b {
-                (a, b)
-            } else if b < a {
-                (b, a)
-            } else {
-                continue; // a NaN: the ray runs in this slab's plane
-            };
-            enter = enter.max(near);
-            leave = leave.min(far);
-        }
+    pub fn slab_test(&self, ray: &SlabRay, pad: f32, t_min: f32, t_max: f32) -> Option<f32> {
+        let low = (self.min - pad - ray.origin) * ray.inverse;
+        let high = (self.max + pad - ray.origin) * ray.inverse;
+        let near = Vec3::select(ray.backwards, high, low);
+        let far = Vec3::select(ray.backwards, low, high);
+        let enter = t_min.max(near.x).max(near.y).max(near.z);
+        let leave = t_max.min(far.x).min(far.y).min(far.z);
         (enter <= leave).then_some(enter)
     }
     // ANCHOR_END: slab
@@ -127,24 +133,27 @@ mod tests {
     fn a_ray_along_x_enters_the_unit_cube_at_its_near_face() {
         // From x = -2 towards +x: enters at t = 2, leaves at t = 3.
         let (o, d) = (Vec3::new(-2.0, 0.5, 0.5), Vec3::X);
-        let t = unit_cube().slab_test(o, d.recip(), 0.0, 0.0, f32::INFINITY);
+        let t = unit_cube().slab_test(&SlabRay::new(o, d), 0.0, 0.0, f32::INFINITY);
         assert_eq!(t, Some(2.0));
     }
 
     #[test]
     fn a_ray_from_inside_enters_at_its_own_start() {
         let (o, d) = (Vec3::splat(0.5), Vec3::Y);
-        let t = unit_cube().slab_test(o, d.recip(), 0.0, 0.0, f32::INFINITY);
+        let t = unit_cube().slab_test(&SlabRay::new(o, d), 0.0, 0.0, f32::INFINITY);
         assert_eq!(t, Some(0.0));
     }
 
     #[test]
     fn a_box_beyond_the_nearest_hit_so_far_is_skipped() {
         let (o, d) = (Vec3::new(-2.0, 0.5, 0.5), Vec3::X);
-        assert_eq!(unit_cube().slab_test(o, d.recip(), 0.0, 0.0, 1.5), None);
+        assert_eq!(
+            unit_cube().slab_test(&SlabRay::new(o, d), 0.0, 0.0, 1.5),
+            None
+        );
         // A hit exactly at the entry distance keeps the box: ties must be seen.
         assert_eq!(
-            unit_cube().slab_test(o, d.recip(), 0.0, 0.0, 2.0),
+            unit_cube().slab_test(&SlabRay::new(o, d), 0.0, 0.0, 2.0),
             Some(2.0)
         );
     }
@@ -154,7 +163,7 @@ mod tests {
         // d.y = 0 and y = 2 is outside 0 ≤ y ≤ 1: 1/d.y = ∞ gives ±∞ distances.
         let (o, d) = (Vec3::new(-2.0, 2.0, 0.5), Vec3::X);
         assert_eq!(
-            unit_cube().slab_test(o, d.recip(), 0.0, 0.0, f32::INFINITY),
+            unit_cube().slab_test(&SlabRay::new(o, d), 0.0, 0.0, f32::INFINITY),
             None
         );
     }
@@ -163,14 +172,14 @@ mod tests {
     fn a_ray_running_in_a_face_plane_hits_the_box() {
         // y = 1 exactly and d.y = 0: (1 − 1)·∞ is NaN, and the ray is on the top face.
         let (o, d) = (Vec3::new(-2.0, 1.0, 0.5), Vec3::X);
-        let t = unit_cube().slab_test(o, d.recip(), 0.0, 0.0, f32::INFINITY);
+        let t = unit_cube().slab_test(&SlabRay::new(o, d), 0.0, 0.0, f32::INFINITY);
         assert_eq!(t, Some(2.0));
     }
 
     #[test]
     fn a_nan_ray_visits_every_box() {
         let (o, d) = (Vec3::splat(f32::NAN), Vec3::X);
-        let t = unit_cube().slab_test(o, d.recip(), 0.0, 0.0, f32::INFINITY);
+        let t = unit_cube().slab_test(&SlabRay::new(o, d), 0.0, 0.0, f32::INFINITY);
         assert_eq!(t, Some(0.0));
     }
 
@@ -179,9 +188,12 @@ mod tests {
         // With pad 0.5 the cube spans -0.5..1.5: entered at t = 1.5, and
         // a ray at y = 1.25 now passes through.
         let (o, d) = (Vec3::new(-2.0, 1.25, 0.5), Vec3::X);
-        assert_eq!(unit_cube().slab_test(o, d.recip(), 0.0, 0.0, 9.0), None);
         assert_eq!(
-            unit_cube().slab_test(o, d.recip(), 0.5, 0.0, 9.0),
+            unit_cube().slab_test(&SlabRay::new(o, d), 0.0, 0.0, 9.0),
+            None
+        );
+        assert_eq!(
+            unit_cube().slab_test(&SlabRay::new(o, d), 0.5, 0.0, 9.0),
             Some(1.5)
         );
     }

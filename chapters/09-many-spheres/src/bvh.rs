@@ -6,7 +6,7 @@ use raylab::scene::{Hit, Object, Scene, SceneQuery};
 use raylab::sphere::Sphere;
 use raylab::{Ray, Vec3};
 
-use crate::aabb::Aabb;
+use crate::aabb::{Aabb, SlabRay};
 
 // ANCHOR: node
 /// One node of the tree, 32 bytes. Its box holds every sphere below it.
@@ -61,14 +61,17 @@ pub const BINS: usize = 16;
 /// The most spheres a leaf may hold.
 pub const MAX_LEAF: usize = 8;
 
-/// The heuristic's cost of stepping into a node, counted in sphere tests:
-/// the search tests both children's boxes there, and a slab test with its
-/// widening costs about what a ray–sphere test does, so 2. At 1 (a node as
-/// cheap as one sphere) the heuristic splits nearly every pair, and the
-/// tree over 10,000 spheres has two nodes per sphere (83 bytes a sphere);
-/// at 2 the leaves hold two or three spheres and it keeps 48, and the
-/// search is no slower (the commit that set it has the measurements).
-pub const TRAVERSAL_COST: f32 = 2.0;
+/// The heuristic's cost of stepping into a node, counted in sphere tests.
+/// The search tests both children's boxes there, and a slab test with its
+/// widening (a dozen subtractions and multiplications, and the widening's
+/// sum) does about twice the arithmetic of a ray–sphere test (two dot
+/// products, mostly): 2 × 2 = 4. Between 2 and 6 the search over a field of
+/// 10,000 spheres is about as fast, but at 4 the leaves hold five or six
+/// spheres, the tree keeps a third less memory than at 2, and a scene as
+/// small as the lab's five spheres becomes a single leaf, which the search
+/// tests after one box as the list does (the bench's "many spheres lab"
+/// group compares the two).
+pub const TRAVERSAL_COST: f32 = 4.0;
 
 /// The share of the distance from the ray's start to a box by which the
 /// box is widened during the search. The ray–sphere test of the core
@@ -254,33 +257,25 @@ impl<'s> Bvh<'s> {
     }
 
     // ANCHOR: pad
-    /// How far each box is widened for this ray: a small share of the
-    /// distance from the ray's start to the box's farthest corner (bounding
-    /// the distance to every centre inside), for the sphere test's
-    /// cancellation, plus a rounding's worth of the coordinates' size.
+    /// How far the boxes are widened for this ray, at `node`: a small share
+    /// of the distance from the ray's start to `node`'s farthest corner
+    /// (bounding the distance to every centre inside), for the sphere
+    /// test's cancellation, plus a rounding's worth of the coordinates'
+    /// size. The search widens `node`'s children by it too: their corners
+    /// are no farther, so it covers them.
     #[inline]
     fn pad(&self, origin: Vec3, node: &Node, coordinates: f32) -> f32 {
-        let far = (origin - Vec3::from(node.min))
-            .abs()
-            .max((origin - Vec3::from(node.max)).abs());
+        // Along each axis, the farther of the box's two faces.
+        let far = (origin - Vec3::from(node.min)).max(Vec3::from(node.max) - origin);
         DISTANCE_SLACK * far.element_sum() + coordinates
     }
     // ANCHOR_END: pad
 
-    /// The entry distance of the ray into `node`'s widened box, up to `t_max`.
+    /// The entry distance of the ray into `node`'s box widened by `pad`,
+    /// up to `t_max`.
     #[inline]
-    fn enter(
-        &self,
-        ray: &Ray,
-        inverse: Vec3,
-        node: usize,
-        coordinates: f32,
-        t_max: f32,
-    ) -> Option<f32> {
-        let node = &self.nodes[node];
-        let pad = self.pad(ray.origin, node, coordinates);
-        node.bounds()
-            .slab_test(ray.origin, inverse, pad, 0.0, t_max)
+    fn enter(&self, ray: &SlabRay, node: usize, pad: f32, t_max: f32) -> Option<f32> {
+        self.nodes[node].bounds().slab_test(ray, pad, 0.0, t_max)
     }
 
     #[inline]
@@ -293,8 +288,8 @@ impl<'s> Bvh<'s> {
     }
 
     // ANCHOR: nearest
-    /// The nearest hit, as [`Scene::nearest_hit`] finds it, to the bit,
-    /// and what the search did.
+    /// The nearest hit, as [`Scene::nearest_hit`] finds it, to the bit;
+    /// what the search did is added to `stats`.
     ///
     /// The ground first, as the list does. Then the tree: a node is opened
     /// only if the ray enters its box no farther than the nearest hit so
@@ -302,54 +297,63 @@ impl<'s> Bvh<'s> {
     /// first, so that the farther one is often skipped. A sphere replaces
     /// the best hit if it is nearer, or as near and earlier in the list:
     /// the list's own rule, "ties go to the earlier object".
-    pub fn nearest_hit_with_stats(&self, ray: &Ray) -> (Option<Hit>, SearchStats) {
-        let mut stats = SearchStats::default();
-        let (mut nearest, mut object) = (f32::INFINITY, None);
+    #[inline]
+    pub fn nearest_hit_counting(&self, ray: &Ray, stats: &mut SearchStats) -> Option<Hit> {
+        let mut nearest = (f32::INFINITY, None);
         if let Some(t) = self.scene.ground.plane.intersect(ray) {
-            (nearest, object) = (t, Some(Object::Ground));
+            nearest = (t, Some(Object::Ground));
         }
+        self.search_nearest(ray, &mut nearest, stats);
+        let (t, object) = nearest;
+        object.map(|o| self.scene.hit_record(ray, t, o))
+    }
+
+    /// Replace `(nearest, object)` with any sphere hit nearer (or as near
+    /// and earlier in the list).
+    #[inline]
+    fn search_nearest(
+        &self,
+        ray: &Ray,
+        (nearest, object): &mut (f32, Option<Object>),
+        stats: &mut SearchStats,
+    ) {
         if self.nodes.is_empty() {
-            return (
-                object.map(|o| self.scene.hit_record(ray, nearest, o)),
-                stats,
-            );
+            return;
         }
-        let inverse = ray.direction.recip();
+        let slabs = SlabRay::new(ray.origin, ray.direction);
         let coordinates = COORDINATE_SLACK * (ray.origin.abs().max_element() + self.scale);
+        stats.boxes += 1;
+        let root_pad = self.pad(ray.origin, &self.nodes[0], coordinates);
+        let Some(t) = self.enter(&slabs, 0, root_pad, *nearest) else {
+            return;
+        };
+        if self.nodes[0].is_leaf() {
+            // A few spheres, one leaf: no stack to set up.
+            return self.search_leaf(&self.nodes[0], ray, (nearest, object), stats);
+        }
         // One pending node per level at most, plus the one just pushed.
         let mut stack = [(0u32, 0.0f32); MAX_DEPTH + 2];
-        let mut len = 0;
-        stats.boxes += 1;
-        if let Some(t) = self.enter(ray, inverse, 0, coordinates, nearest) {
-            stack[0] = (0, t);
-            len = 1;
-        }
+        stack[0] = (0, t);
+        let mut len = 1;
         while len > 0 {
             len -= 1;
             let (index, entered) = stack[len];
-            if entered > nearest {
+            if entered > *nearest {
                 continue; // something nearer was found since it was pushed
             }
             let node = &self.nodes[index as usize];
             if node.is_leaf() {
-                let first = node.first as usize;
-                for k in first..first + node.count as usize {
-                    stats.spheres += 1;
-                    let Some(t) = self.sphere(k).intersect(ray) else {
-                        continue;
-                    };
-                    let i = self.order[k] as usize;
-                    let earlier = matches!(object, Some(Object::Sphere(j)) if i < j);
-                    if t < nearest || (t == nearest && earlier) {
-                        (nearest, object) = (t, Some(Object::Sphere(i)));
-                    }
-                }
+                self.search_leaf(node, ray, (nearest, object), stats);
                 continue;
             }
             let (a, b) = (index as usize + 1, node.first as usize);
             stats.boxes += 2;
-            let ta = self.enter(ray, inverse, a, coordinates, nearest);
-            let tb = self.enter(ray, inverse, b, coordinates, nearest);
+            // The parent's widening covers both children's (its box holds
+            // theirs, so its farthest corner is at least as far): one
+            // widening for two boxes, and no hit is lost.
+            let pad = self.pad(ray.origin, node, coordinates);
+            let ta = self.enter(&slabs, a, pad, *nearest);
+            let tb = self.enter(&slabs, b, pad, *nearest);
             // Push the farther child first, so that the nearer is popped next.
             let mut push = |child: usize, t: f32| {
                 stack[len] = (child as u32, t);
@@ -363,8 +367,30 @@ impl<'s> Bvh<'s> {
                 (None, None) => ((), ()),
             };
         }
-        let hit = object.map(|o| self.scene.hit_record(ray, nearest, o));
-        (hit, stats)
+    }
+
+    /// Test a leaf's spheres, keeping the list's rule: a sphere replaces
+    /// the best hit if it is nearer, or as near and earlier in the list.
+    #[inline]
+    fn search_leaf(
+        &self,
+        leaf: &Node,
+        ray: &Ray,
+        (nearest, object): (&mut f32, &mut Option<Object>),
+        stats: &mut SearchStats,
+    ) {
+        let first = leaf.first as usize;
+        for k in first..first + leaf.count as usize {
+            stats.spheres += 1;
+            let Some(t) = self.sphere(k).intersect(ray) else {
+                continue;
+            };
+            let i = self.order[k] as usize;
+            let earlier = matches!(*object, Some(Object::Sphere(j)) if i < j);
+            if t < *nearest || (t == *nearest && earlier) {
+                (*nearest, *object) = (t, Some(Object::Sphere(i)));
+            }
+        }
     }
     // ANCHOR_END: nearest
 
@@ -378,32 +404,40 @@ impl<'s> Bvh<'s> {
         if self.nodes.is_empty() {
             return false;
         }
-        let inverse = ray.direction.recip();
+        let slabs = SlabRay::new(ray.origin, ray.direction);
         let coordinates = COORDINATE_SLACK * (ray.origin.abs().max_element() + self.scale);
+        // Whether the ray passes through `node`'s box, widened by `pad`.
+        let passes = |node: usize, pad: f32| self.enter(&slabs, node, pad, f32::INFINITY).is_some();
+        let hits_leaf = |leaf: &Node| {
+            let first = leaf.first as usize;
+            (first..first + leaf.count as usize).any(|k| self.sphere(k).intersect(ray).is_some())
+        };
+        if !passes(0, self.pad(ray.origin, &self.nodes[0], coordinates)) {
+            return false;
+        }
+        if self.nodes[0].is_leaf() {
+            return hits_leaf(&self.nodes[0]);
+        }
         let mut stack = [0u32; MAX_DEPTH + 2];
         let mut len = 1;
         while len > 0 {
             len -= 1;
             let index = stack[len] as usize;
-            if self
-                .enter(ray, inverse, index, coordinates, f32::INFINITY)
-                .is_none()
-            {
-                continue;
-            }
             let node = &self.nodes[index];
             if node.is_leaf() {
-                let first = node.first as usize;
-                if (first..first + node.count as usize)
-                    .any(|k| self.sphere(k).intersect(ray).is_some())
-                {
+                if hits_leaf(node) {
                     return true;
                 }
                 continue;
             }
-            stack[len] = node.first;
-            stack[len + 1] = index as u32 + 1;
-            len += 2;
+            // One widening for both children, as in the nearest-hit search.
+            let pad = self.pad(ray.origin, node, coordinates);
+            for child in [index + 1, node.first as usize] {
+                if passes(child, pad) {
+                    stack[len] = child as u32;
+                    len += 1;
+                }
+            }
         }
         false
     }
@@ -412,7 +446,8 @@ impl<'s> Bvh<'s> {
 
 impl SceneQuery for Bvh<'_> {
     fn nearest_hit(&self, ray: &Ray) -> Option<Hit> {
-        self.nearest_hit_with_stats(ray).0
+        // The counts are dropped: once inlined, they cost nothing.
+        self.nearest_hit_counting(ray, &mut SearchStats::default())
     }
 
     fn any_hit(&self, ray: &Ray) -> bool {
@@ -541,7 +576,7 @@ mod tests {
     #[test]
     fn the_heuristic_cuts_two_far_clusters_apart() {
         // Four unit boxes at x = 0 and four at x = 100: cutting between
-        // them costs 1 + (6·4 + 6·4)/area, far below the leaf's 8.
+        // them costs 4 + (6·4 + 6·4)/406 ≈ 4.1, below the leaf's 8.
         let mut items: Vec<Item> = (0..8)
             .map(|i| {
                 let x = if i % 2 == 0 { 0.0 } else { 100.0 };
@@ -567,9 +602,17 @@ mod tests {
     }
 
     #[test]
+    fn the_lab_scenes_five_spheres_are_one_leaf() {
+        let scene = Scene::lab();
+        let tree = Bvh::build(&scene);
+        assert_eq!(tree.nodes().len(), 1);
+        assert_eq!(tree.nodes()[0].count, 5);
+    }
+
+    #[test]
     fn the_heuristic_keeps_two_overlapping_spheres_in_one_leaf() {
         // Two unit boxes overlapping almost entirely: a cut costs
-        // 1 + (6·1 + 6·1)/area(node) ≈ 3 > 2, the leaf's cost.
+        // 4 + (6·1 + 6·1)/area(node) ≈ 6 > 2, the leaf's cost.
         let mut items: Vec<Item> = [0.0, 0.01]
             .iter()
             .enumerate()

@@ -53,8 +53,10 @@ impl<'t> BvhX8<'t> {
 
     // ANCHOR: enter
     /// The lanes whose ray enters `node`'s widened box no farther than
-    /// `t_max`: [`Bvh`]'s slab test and widening, lane by lane, with a
-    /// mask where the scalar code branches on NaN.
+    /// `t_max`: [`Bvh`]'s slab test and widening, lane by lane. `wide`'s
+    /// `max` and `min` keep the left number where the right is NaN, as
+    /// `f32::max` and `f32::min` do, so a NaN distance sets no limit here
+    /// too.
     #[inline]
     fn enter(
         &self,
@@ -68,7 +70,7 @@ impl<'t> BvhX8<'t> {
             Vec3x8::splat(Vec3::from(node.min)),
             Vec3x8::splat(Vec3::from(node.max)),
         );
-        let far = |lo: f32x8, hi: f32x8, o: f32x8| (o - lo).abs().max((o - hi).abs());
+        let far = |lo: f32x8, hi: f32x8, o: f32x8| (o - lo).max(hi - o);
         let reach = far(min.x, max.x, o.x) + far(min.y, max.y, o.y) + far(min.z, max.z, o.z);
         let pad = f32x8::splat(DISTANCE_SLACK) * reach + coordinates;
         let (mut enter, mut leave) = (f32x8::ZERO, t_max);
@@ -77,15 +79,11 @@ impl<'t> BvhX8<'t> {
             (min.y, max.y, o.y, inverse.y),
             (min.z, max.z, o.z, inverse.z),
         ] {
-            let a = (lo - pad - o) * inverse;
-            let b = (hi + pad - o) * inverse;
-            let in_order = a.cmp_le(b);
-            // Mask: neither distance is NaN (the ray does not run in the
-            // slab's plane); elsewhere the slab sets no limit.
-            let numbers = in_order | b.cmp_lt(a);
-            let (near, far) = (in_order.blend(a, b), in_order.blend(b, a));
-            enter = numbers.blend(enter.max(near), enter);
-            leave = numbers.blend(leave.min(far), leave);
+            let low = (lo - pad - o) * inverse;
+            let high = (hi + pad - o) * inverse;
+            let backwards = inverse.cmp_lt(f32x8::ZERO);
+            enter = enter.max(backwards.blend(high, low));
+            leave = leave.min(backwards.blend(low, high));
         }
         enter.cmp_le(leave)
     }

@@ -117,7 +117,8 @@ pub fn numbers_text(
             .map_or("—".to_owned(), |(_, ms)| format!("{ms:.2} ms"))
     };
     text.push_str(&format!(
-        "\nOne render of each (the tree's build included) at chapter 5's settings, {}×{}, \
+        "\nThe fastest of up to five renders of each (one where a render takes a third of a \
+         second or more; the tree's build included) at chapter 5's settings, {}×{}, \
          on {machine}. The tree over {} spheres took {} to build on one core \
          ({} for 1,000; the best of five), and keeps {} nodes, {:.1} bytes per sphere, {} \
          levels deep.\n",
