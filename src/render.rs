@@ -45,8 +45,8 @@ struct PixelResult {
 /// A pixel's colour: the plain average of its samples' colours, in linear
 /// light, summed in sample order and divided by their number. Nothing is
 /// allocated: each offset is computed from (seed, pixel, sample) on the spot.
-fn render_pixel<S: Step + ?Sized>(
-    tracer: &mut Tracer<'_, S>,
+fn render_pixel<S: Step + ?Sized, Q: SceneQuery>(
+    tracer: &mut Tracer<'_, S, Q>,
     camera: &Camera,
     (i, j): (u32, u32),
     settings: &Settings,
@@ -83,9 +83,9 @@ pub fn render<S: Step + ?Sized>(
 /// [`render`], with every ray's hit found by `objects` (a [`SceneQuery`]
 /// that gives the scene's own answers faster, such as chapter 9's tree)
 /// instead of by testing the scene's objects one by one.
-pub fn render_with_query<S: Step + ?Sized>(
+pub fn render_with_query<S: Step + ?Sized, Q: SceneQuery>(
     scene: &Scene,
-    objects: &dyn SceneQuery,
+    objects: &Q,
     camera: &Camera,
     step: &S,
     settings: &Settings,

@@ -257,11 +257,25 @@ pub trait SceneQuery: Sync {
     fn any_hit(&self, ray: &Ray) -> bool;
 }
 
+/// A reference answers as what it points to: a tracer can be handed a
+/// `&dyn SceneQuery` chosen at run time.
+impl<T: SceneQuery + ?Sized> SceneQuery for &T {
+    fn nearest_hit(&self, ray: &Ray) -> Option<Hit> {
+        (**self).nearest_hit(ray)
+    }
+
+    fn any_hit(&self, ray: &Ray) -> bool {
+        (**self).any_hit(ray)
+    }
+}
+
 impl SceneQuery for Scene {
+    #[inline]
     fn nearest_hit(&self, ray: &Ray) -> Option<Hit> {
         Scene::nearest_hit(self, ray)
     }
 
+    #[inline]
     fn any_hit(&self, ray: &Ray) -> bool {
         Scene::any_hit(self, ray)
     }

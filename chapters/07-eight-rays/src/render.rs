@@ -62,9 +62,10 @@ fn trace_again(
     let mut waved = RayCounts::default();
     count_sample(worker.waves, sample, &mut waved);
     tally.counts = tally.counts - waved;
+    let one_ray = setup.scene.one_ray();
     let mut scalar = Tracer::with_query(
         worker.scene,
-        setup.scene.one_ray(),
+        &one_ray,
         worker.step,
         settings.max_depth,
         settings.epsilon,
