@@ -34,6 +34,7 @@
 
 pub mod driver;
 pub mod figures;
+pub mod gpu;
 pub mod input;
 pub mod knobs;
 pub mod measure;
