@@ -42,6 +42,8 @@ pub fn scripts() -> Vec<(&'static str, String)> {
         // 64 paths per pixel: one step down from chapter 6's 256.
         ("explorer-paths.png", "key:6 key:R settle".into()),
         ("explorer-sun-20.png", "key:6 key:R keys:]]] settle".into()),
+        // Without a GPU adapter, the frame shows the line that says so.
+        ("explorer-gpu.png", "key:g settle".into()),
     ]
 }
 

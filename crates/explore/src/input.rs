@@ -59,6 +59,7 @@ pub const HELP: &[(&str, &str)] = &[
     ("← →", "orbit by 5°"),
     ("click", "the pixel's ray tree;  Esc clears it"),
     ("c", "back to the scene's camera"),
+    ("g", "the GPU's render (chapter 10) beside the CPU's"),
     ("w", "write the frame as PNG, print its command"),
     ("?  h", "this help;  q: quit"),
 ];

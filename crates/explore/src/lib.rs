@@ -6,13 +6,15 @@
 //! fast floor on every core (chapter 7's waves for chapters 1–5, chapter
 //! 8's eight paths for path tracing), with the knobs on keys, an orbit
 //! camera on the mouse, a clicked pixel's ray tree drawn into the scene,
-//! and the scene file read again on every save.
+//! and the scene file read again on every save. `g` puts the same view
+//! from chapter 10's shader beside it, to compare the two.
 //!
 //! Read first:
 //!
 //! - [`state`]: the explorer without its window, inputs to frame;
 //! - [`knobs`] and [`orbit`]: what the keys and the mouse change;
 //! - [`tree3d`] and [`overlay`]: what is drawn over the scene;
+//! - [`gpu`]: `g`, the GPU's render beside the CPU's;
 //! - [`window`]: the window itself.
 //!
 //! **Why winit and softbuffer.** The frame is made on the CPU, a row per
@@ -21,10 +23,15 @@
 //! library; softbuffer copies a CPU buffer into a winit window with no GPU,
 //! no OpenGL and no shader, so the explorer runs where the workbook runs,
 //! virtual machines and Xvfb included. A GPU presenting layer (wgpu,
-//! pixels) would add a large build and a driver to a program whose pixels
-//! never touch the GPU. Only winit's X11 backend is built (XWayland covers
-//! Wayland desktops), and it loads the X libraries when the window opens,
-//! so building needs no system headers.
+//! pixels) would put a driver between every frame and the screen, for
+//! pixels made on the CPU. The one time pixels come from a GPU is `g`
+//! ([`gpu`]): chapter 10's shader renders the same view through wgpu, and
+//! its image is read back and shown through softbuffer like the CPU's.
+//! So wgpu is in the build (chapter 10 brings it), but the explorer looks
+//! for a GPU only when `g` is first pressed, and a machine without one
+//! gets one line in the overlay. Only winit's X11 backend is built
+//! (XWayland covers Wayland desktops), and it loads the X libraries when
+//! the window opens, so building needs no system headers.
 //!
 //! **Why the state is apart from the window.** Everything the learner
 //! does arrives as an [`input::Input`], and everything shown is
@@ -34,6 +41,7 @@
 
 pub mod driver;
 pub mod figures;
+pub mod gpu;
 pub mod input;
 pub mod knobs;
 pub mod measure;

@@ -7,8 +7,10 @@ use image::RgbImage;
 use raylab_plot::text::text_width;
 use raylab_plot::{Anchor, Canvas, Rgb};
 
+use crate::gpu::Outcome;
 use crate::input::HELP;
 use crate::state::Explorer;
+use raylab::tolerance::WITHIN_LEVELS;
 
 const SIZE: f32 = 13.0;
 const LINE: f32 = 17.0;
@@ -66,10 +68,77 @@ pub fn status_lines(explorer: &Explorer) -> Vec<(String, Rgb)> {
         "? help"
     );
     let mut lines = vec![(first, TEXT), (second, MUTED)];
+    lines.extend(gpu_lines(explorer));
     if let Some(status) = explorer.status() {
         lines.push((status.to_owned(), WARN));
     }
     lines
+}
+
+/// With `g` on: the GPU frame's time beside the CPU's, and how the two
+/// images agree under LAB.md's tolerance; or why there is no GPU frame.
+fn gpu_lines(explorer: &Explorer) -> Vec<(String, Rgb)> {
+    let Some(outcome) = explorer.gpu().outcome() else {
+        return Vec::new();
+    };
+    let frame = match outcome {
+        Outcome::Pending => return vec![("GPU: rendering…".to_owned(), MUTED)],
+        Outcome::Refused(why) => return vec![(why.clone(), WARN)],
+        Outcome::Frame(frame) => frame,
+    };
+    let ms = |d: std::time::Duration| d.as_secs_f64() * 1e3;
+    let time = format!(
+        "GPU frame {:.0} ms (dispatch + readback) on {}; the CPU's {:.0} ms",
+        ms(frame.time),
+        explorer.gpu().adapter().unwrap_or("the GPU"),
+        ms(explorer.stats().frame)
+    );
+    let agreement = &frame.agreement;
+    let (verdict, colour) = if agreement.meets_lab_tolerance() {
+        ("LAB.md's tolerance met", TEXT)
+    } else {
+        ("outside LAB.md's tolerance", WARN)
+    };
+    let compared = format!(
+        "GPU against CPU: {:.2} % of pixels within {WITHIN_LEVELS} levels, largest difference {}: \
+         {verdict}",
+        // Down, so that a share just short of all never reads 100.00 %.
+        (agreement.within_3 * 1e4).floor() / 1e2,
+        agreement.max,
+    );
+    vec![(time, MUTED), (compared, colour)]
+}
+
+/// The labels under the two halves of a split frame.
+fn split_labels(explorer: &Explorer, width: f32, height: f32) -> Vec<Panel> {
+    if explorer.gpu().frame(explorer.size()).is_none() {
+        return Vec::new();
+    }
+    let adapter = explorer.gpu().adapter().unwrap_or("the GPU");
+    let labels = [
+        "CPU (chapter 7's waves)".to_owned(),
+        format!("GPU (chapter 10's shader, {adapter})"),
+    ];
+    let half = (width / 2.0).floor();
+    let y = height - PAD - LINE - PAD;
+    labels
+        .into_iter()
+        .zip([PAD, half + PAD])
+        .filter_map(|(label, x)| lines_panel(x, y, vec![(label, TEXT)], half - 2.0 * PAD))
+        .collect()
+}
+
+/// A thin light line down the middle of a split frame, where the CPU's
+/// half meets the GPU's.
+pub fn draw_seam(frame: &mut RgbImage, explorer: &Explorer) {
+    if explorer.gpu().frame(frame.dimensions()).is_none() {
+        return;
+    }
+    let x = frame.width() / 2;
+    for y in 0..frame.height() {
+        let pixel = frame.get_pixel_mut(x, y);
+        pixel.0 = pixel.0.map(|c| c / 2 + 128);
+    }
 }
 
 /// What a box of the overlay holds.
@@ -89,7 +158,7 @@ struct Panel {
 
 /// The overlay's boxes on a `width` × `height` frame.
 fn panels(explorer: &Explorer, width: f32, height: f32) -> Vec<Panel> {
-    let mut panels = Vec::new();
+    let mut panels = split_labels(explorer, width, height);
     let status = status_lines(explorer);
     let lines = status.len();
     panels.extend(lines_panel(PAD, PAD, status, width - 2.0 * PAD));

@@ -14,6 +14,7 @@ use raylab::{Camera, Keep, NoProgress, Scene, Vec3};
 use raylab_cli::probe_text::{self, Listing};
 use rayon::prelude::*;
 
+use crate::gpu::Comparison;
 use crate::input::{Button, Input, Key};
 use crate::knobs::Knobs;
 use crate::orbit::View;
@@ -104,6 +105,8 @@ pub struct Explorer {
     stats: Stats,
     /// Minimised, or sized to nothing: no frame is rendered.
     hidden: bool,
+    /// `g`: the same view from chapter 10's shader, beside this one.
+    gpu: Comparison,
 }
 
 impl Explorer {
@@ -127,6 +130,7 @@ impl Explorer {
             messages: Vec::new(),
             stats: Stats::default(),
             hidden: false,
+            gpu: Comparison::default(),
         }
     }
 
@@ -149,6 +153,11 @@ impl Explorer {
     /// The scene as last rendered, without the overlay.
     pub fn image(&self) -> &RgbImage {
         &self.image
+    }
+
+    /// The GPU comparison (`g`).
+    pub fn gpu(&self) -> &Comparison {
+        &self.gpu
     }
 
     pub fn probe(&self) -> Option<&Probe> {
@@ -201,7 +210,8 @@ impl Explorer {
         // A preview held still with the button down waits for the release.
         let waiting =
             self.progress == Progress::Preview && self.drag.is_some() && !self.camera_moved;
-        !(self.hidden || self.is_settled() || waiting)
+        let settled = self.is_settled() && !self.gpu.is_pending();
+        !(self.hidden || settled || waiting)
     }
 
     /// Take one input; the runner does what the returned action asks.
@@ -262,6 +272,11 @@ impl Explorer {
             Key::Char(']') => knobs.step_sun(true),
             Key::Char('[') => knobs.step_sun(false),
             Key::Char('m') => knobs.toggle_materials(),
+            Key::Char('g') => {
+                // The CPU's image stays: the next frame adds the GPU's.
+                self.gpu.toggle();
+                return Action::None;
+            }
             Key::Char('?' | 'h') => {
                 knobs.help = !knobs.help;
                 return Action::None;
@@ -405,6 +420,11 @@ impl Explorer {
         if !self.wants_frame() {
             return false;
         }
+        if self.is_settled() {
+            // Only the GPU's half is missing.
+            self.compare_on_gpu();
+            return true;
+        }
         let moving = std::mem::take(&mut self.camera_moved) || self.drag.is_some_and(|d| d.moved);
         let start = Instant::now();
         let rays = if self.knobs.paths {
@@ -418,6 +438,7 @@ impl Explorer {
                     frame: start.elapsed(),
                     rays,
                 };
+                self.compare_on_gpu();
                 true
             }
             Err(error) => {
@@ -425,6 +446,30 @@ impl Explorer {
                 self.progress = Progress::Done;
                 false
             }
+        }
+    }
+
+    /// With `g` on, the frame just rendered again by chapter 10's shader,
+    /// with the same settings. A new reason why it cannot be is printed in
+    /// the terminal too, where it is not cut to the window's width.
+    fn compare_on_gpu(&mut self) {
+        if !self.gpu.is_on() {
+            return;
+        }
+        let before = self.gpu.refusal().map(str::to_owned);
+        let camera = self.camera();
+        let (done, _) = self.samples();
+        match self.knobs.whitted(self.width, self.height, done.max(1)) {
+            Ok(settings) => {
+                self.gpu
+                    .render(&self.scene, &camera, &self.knobs, &settings, &self.image)
+            }
+            Err(error) => self.gpu.refuse(format!("no GPU half: {error}")),
+        }
+        if let Some(why) = self.gpu.refusal()
+            && before.as_deref() != Some(why)
+        {
+            self.messages.push(why.to_owned());
         }
     }
 
@@ -494,17 +539,27 @@ impl Explorer {
         Ok(render.rays)
     }
 
+    /// The scene as the window shows it, without the overlay: the image,
+    /// or with `g` on, its left half beside the GPU's right half.
+    pub fn scene_frame(&self) -> RgbImage {
+        match self.gpu.frame(self.image.dimensions()) {
+            Some(gpu) => crate::gpu::split(&self.image, &gpu.image),
+            None => self.image.clone(),
+        }
+    }
+
     /// The frame the window shows: the scene, the clicked pixel's ray
     /// tree in 3D, and the overlay.
     pub fn compose(&self) -> RgbImage {
+        let mut frame = self.scene_frame();
+        crate::overlay::draw_seam(&mut frame, self);
         let Some(probe) = &self.probe else {
-            let mut frame = self.image.clone();
             crate::overlay::draw_on(&mut frame, self);
             return frame;
         };
         // The tree may cross the whole frame: draw everything on a canvas.
         let mut canvas = raylab_plot::Canvas::new(self.width, self.height, [0, 0, 0]);
-        canvas.draw_rgb_image(&self.image, 0, 0, 1);
+        canvas.draw_rgb_image(&frame, 0, 0, 1);
         crate::tree3d::draw(&mut canvas, &self.camera(), probe);
         crate::overlay::draw(&mut canvas, self);
         canvas.to_rgb_image()

@@ -257,6 +257,7 @@ impl ApplicationHandler for App {
         }
         if self.explorer.frame() {
             self.times.push(self.explorer.stats().frame);
+            print_messages(&mut self.explorer);
             self.redraw = true;
         }
         // A counted run shows a frame every turn, so that it ends.

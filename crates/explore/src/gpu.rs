@@ -1,0 +1,242 @@
+//! `g`: the same view traced by chapter 10's shader, beside the CPU's.
+//!
+//! The lab's tracer ran on a GPU; chapter 10 runs chapters 1–5 as a WGSL
+//! compute shader. With `g` on, every Whitted frame the explorer renders
+//! is rendered a second time by that shader, with the same scene, camera,
+//! chapter, rays per pixel, depth and epsilon, and the two are compared
+//! with LAB.md's tolerance, the one the golden images are held to.
+//!
+//! The device is made on the first frame that asks for it and kept: the
+//! explorer starts without looking for a GPU, and runs where there is
+//! none. Whatever stops the comparison (no adapter, path tracing, a
+//! pattern the shader refuses) is one line for the overlay, never a panic.
+
+use std::collections::HashMap;
+use std::collections::hash_map::Entry;
+use std::time::Duration;
+
+use ch10_gpu::gpu::{Gpu, Tracer};
+use ch10_gpu::run::render_image;
+use ch10_gpu::scene_buffer::{self, PackError};
+use ch10_gpu::shader::Source;
+use image::RgbImage;
+use raylab::tolerance::{Agreement, compare};
+use raylab::{Camera, Scene, Settings};
+
+use crate::knobs::Knobs;
+
+/// A frame from the shader, and how it compares with the CPU's.
+#[derive(Clone, Debug)]
+pub struct GpuFrame {
+    pub image: RgbImage,
+    /// Dispatch and readback: the GPU's part of the frame (the sRGB
+    /// encoding after it is the core's, on the CPU, as for any chapter).
+    pub time: Duration,
+    /// The shader's image (ours) against the CPU's (the reference).
+    pub agreement: Agreement,
+}
+
+/// What the comparison has to show.
+#[derive(Clone, Debug)]
+pub enum Outcome {
+    /// Nothing yet: `g` was pressed and the next frame will render it.
+    Pending,
+    Frame(GpuFrame),
+    /// Why there is no GPU frame, in one line.
+    Refused(String),
+}
+
+/// The comparison: whether it is on, the device once made, a compiled
+/// tracer per max depth (the shader's ray stack is sized for it), and
+/// the last outcome.
+pub struct Comparison {
+    on: bool,
+    device: Option<Result<Gpu, String>>,
+    tracers: HashMap<u32, Tracer>,
+    outcome: Outcome,
+}
+
+impl Default for Comparison {
+    fn default() -> Comparison {
+        Comparison {
+            on: false,
+            device: None,
+            tracers: HashMap::new(),
+            outcome: Outcome::Pending,
+        }
+    }
+}
+
+impl Comparison {
+    pub fn is_on(&self) -> bool {
+        self.on
+    }
+
+    /// Switch the comparison on (the next frame renders it) or off.
+    pub fn toggle(&mut self) {
+        self.on = !self.on;
+        self.outcome = Outcome::Pending;
+    }
+
+    /// On, and waiting for a frame.
+    pub fn is_pending(&self) -> bool {
+        self.on && matches!(self.outcome, Outcome::Pending)
+    }
+
+    /// The last outcome, while the comparison is on.
+    pub fn outcome(&self) -> Option<&Outcome> {
+        self.on.then_some(&self.outcome)
+    }
+
+    /// The GPU frame to show beside a CPU frame of `size`, if there is one.
+    pub fn frame(&self, size: (u32, u32)) -> Option<&GpuFrame> {
+        match self.outcome()? {
+            Outcome::Frame(frame) if frame.image.dimensions() == size => Some(frame),
+            _ => None,
+        }
+    }
+
+    /// Why there is no GPU frame, while the comparison is on.
+    pub fn refusal(&self) -> Option<&str> {
+        match self.outcome()? {
+            Outcome::Refused(why) => Some(why),
+            _ => None,
+        }
+    }
+
+    /// The adapter's name (without its driver), once a device is made.
+    pub fn adapter(&self) -> Option<&str> {
+        match &self.device {
+            Some(Ok(gpu)) => gpu.adapter.split(" (").next(),
+            _ => None,
+        }
+    }
+
+    /// No GPU frame, for a reason found outside.
+    pub fn refuse(&mut self, why: String) {
+        self.outcome = Outcome::Refused(why);
+    }
+
+    /// Render the view the CPU just rendered as `cpu` with `settings`, and
+    /// compare; the outcome replaces the last one.
+    pub fn render(
+        &mut self,
+        scene: &Scene,
+        camera: &Camera,
+        knobs: &Knobs,
+        settings: &Settings,
+        cpu: &RgbImage,
+    ) {
+        self.outcome = match self.try_render(scene, camera, knobs, settings, cpu) {
+            Ok(frame) => Outcome::Frame(frame),
+            Err(why) => Outcome::Refused(why),
+        };
+    }
+
+    fn try_render(
+        &mut self,
+        scene: &Scene,
+        camera: &Camera,
+        knobs: &Knobs,
+        settings: &Settings,
+        cpu: &RgbImage,
+    ) -> Result<GpuFrame, String> {
+        if knobs.paths {
+            return Err(
+                "no GPU half in path tracing: chapter 10's shader traces chapters 1–5 \
+                        (press 1–5)"
+                    .into(),
+            );
+        }
+        // Checked before any device is made: a refusal needs no GPU.
+        scene_buffer::pack(scene, camera, settings, knobs.like.features()).map_err(
+            |PackError::PerPixelPattern(pattern)| {
+                format!(
+                    "no GPU half at {} rays/px: {pattern} points differ in every pixel, the \
+                     shader takes one set",
+                    settings.sampling.spp()
+                )
+            },
+        )?;
+        let gpu = match self
+            .device
+            .get_or_insert_with(|| Gpu::new().map_err(|e| format!("no GPU half: {e}")))
+        {
+            Ok(gpu) => gpu,
+            Err(why) => return Err(why.clone()),
+        };
+        let tracer = match self.tracers.entry(settings.max_depth) {
+            Entry::Occupied(entry) => entry.into_mut(),
+            Entry::Vacant(entry) => entry.insert(
+                gpu.compile(&Source::built_in(), settings.max_depth)
+                    .map_err(|e| format!("no GPU half: {e}"))?,
+            ),
+        };
+        let view = (scene.clone(), *camera);
+        let framed = render_image(gpu, tracer, knobs.like, settings, &view, false)
+            .map_err(|e| format!("no GPU half: {e}"))?;
+        let image = framed.rendered.srgb;
+        if image.dimensions() != cpu.dimensions() {
+            return Err("no GPU half: the shader's image is not the CPU's size".into());
+        }
+        let agreement = compare(&image, cpu);
+        Ok(GpuFrame {
+            image,
+            time: framed.dispatch + framed.readback,
+            agreement,
+        })
+    }
+}
+
+/// The view split down the middle: the CPU's left half, the GPU's right.
+/// Both images are the whole view, so the seam shows where they differ.
+pub fn split(cpu: &RgbImage, gpu: &RgbImage) -> RgbImage {
+    let mut frame = cpu.clone();
+    let half = cpu.width() / 2;
+    for (x, y, pixel) in frame.enumerate_pixels_mut() {
+        if x >= half
+            && let Some(theirs) = gpu.get_pixel_checked(x, y)
+        {
+            *pixel = *theirs;
+        }
+    }
+    frame
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use image::Rgb;
+
+    #[test]
+    fn the_split_frame_is_the_cpu_image_left_of_the_middle_and_the_gpu_image_right_of_it() {
+        let cpu = RgbImage::from_pixel(5, 2, Rgb([1, 1, 1]));
+        let gpu = RgbImage::from_pixel(5, 2, Rgb([9, 9, 9]));
+        let frame = split(&cpu, &gpu);
+        let row: Vec<u8> = (0..5).map(|x| frame.get_pixel(x, 1)[0]).collect();
+        assert_eq!(row, [1, 1, 9, 9, 9]);
+    }
+
+    #[test]
+    fn path_tracing_and_per_pixel_patterns_are_refused_before_any_device_is_made() {
+        let mut comparison = Comparison::default();
+        comparison.toggle();
+        let (scene, camera) = (Scene::lab(), Camera::lab());
+        let cpu = RgbImage::new(8, 6);
+        let mut knobs = Knobs {
+            spp: 16,
+            ..Knobs::default()
+        };
+        let settings = knobs.whitted(8, 6, 16).unwrap();
+        comparison.render(&scene, &camera, &knobs, &settings, &cpu);
+        let why = comparison.refusal().unwrap();
+        assert!(
+            why.contains("16 rays/px") && why.contains("jittered"),
+            "{why}"
+        );
+        knobs.chapter(6);
+        comparison.render(&scene, &camera, &knobs, &settings, &cpu);
+        assert!(comparison.refusal().unwrap().contains("path tracing"));
+        assert!(comparison.device.is_none());
+    }
+}
