@@ -1,8 +1,9 @@
 //! `g`: the same view traced by chapter 10's shader, beside the CPU's.
 //!
 //! The lab's tracer ran on a GPU; chapter 10 runs chapters 1–5 as a WGSL
-//! compute shader. With `g` on, every Whitted frame the explorer renders
-//! is rendered a second time by that shader, with the same scene, camera,
+//! compute shader. With `g` on, every finished Whitted frame the explorer
+//! renders (not the previews while the camera moves, nor the refinements
+//! on the way) is rendered a second time by that shader, with the same scene, camera,
 //! chapter, rays per pixel, depth and epsilon, and the two are compared
 //! with LAB.md's tolerance, the one the golden images are held to.
 //!
@@ -117,18 +118,20 @@ impl Comparison {
         self.outcome = Outcome::Refused(why);
     }
 
-    /// Render the view the CPU just rendered as `cpu` with `settings`, and
-    /// compare; the outcome replaces the last one.
+    /// Render the view the CPU just rendered as `cpu` with `settings`, if
+    /// it is `still` (finished), and compare; the outcome replaces the last
+    /// one. A view still on its way is only checked for a refusal.
     pub fn render(
         &mut self,
         scene: &Scene,
         camera: &Camera,
         knobs: &Knobs,
         settings: &Settings,
-        cpu: &RgbImage,
+        (cpu, still): (&RgbImage, bool),
     ) {
-        self.outcome = match self.try_render(scene, camera, knobs, settings, cpu) {
-            Ok(frame) => Outcome::Frame(frame),
+        self.outcome = match self.try_render(scene, camera, knobs, settings, (cpu, still)) {
+            Ok(Some(frame)) => Outcome::Frame(frame),
+            Ok(None) => Outcome::Pending,
             Err(why) => Outcome::Refused(why),
         };
     }
@@ -139,8 +142,8 @@ impl Comparison {
         camera: &Camera,
         knobs: &Knobs,
         settings: &Settings,
-        cpu: &RgbImage,
-    ) -> Result<GpuFrame, String> {
+        (cpu, still): (&RgbImage, bool),
+    ) -> Result<Option<GpuFrame>, String> {
         if knobs.paths {
             return Err(
                 "no GPU half in path tracing: chapter 10's shader traces chapters 1–5 \
@@ -158,6 +161,9 @@ impl Comparison {
                 )
             },
         )?;
+        if !still {
+            return Ok(None);
+        }
         let gpu = match self
             .device
             .get_or_insert_with(|| Gpu::new().map_err(|e| format!("no GPU half: {e}")))
@@ -180,11 +186,11 @@ impl Comparison {
             return Err("no GPU half: the shader's image is not the CPU's size".into());
         }
         let agreement = compare(&image, cpu);
-        Ok(GpuFrame {
+        Ok(Some(GpuFrame {
             image,
             time: framed.dispatch + framed.readback,
             agreement,
-        })
+        }))
     }
 }
 
@@ -228,14 +234,14 @@ mod tests {
             ..Knobs::default()
         };
         let settings = knobs.whitted(8, 6, 16).unwrap();
-        comparison.render(&scene, &camera, &knobs, &settings, &cpu);
+        comparison.render(&scene, &camera, &knobs, &settings, (&cpu, true));
         let why = comparison.refusal().unwrap();
         assert!(
             why.contains("16 rays/px") && why.contains("jittered"),
             "{why}"
         );
         knobs.chapter(6);
-        comparison.render(&scene, &camera, &knobs, &settings, &cpu);
+        comparison.render(&scene, &camera, &knobs, &settings, (&cpu, true));
         assert!(comparison.refusal().unwrap().contains("path tracing"));
         assert!(comparison.device.is_none());
     }

@@ -82,7 +82,9 @@ fn gpu_lines(explorer: &Explorer) -> Vec<(String, Rgb)> {
         return Vec::new();
     };
     let frame = match outcome {
-        Outcome::Pending => return vec![("GPU: rendering…".to_owned(), MUTED)],
+        Outcome::Pending => {
+            return vec![("GPU: rendered once the view is still…".to_owned(), MUTED)];
+        }
         Outcome::Refused(why) => return vec![(why.clone(), WARN)],
         Outcome::Frame(frame) => frame,
     };

@@ -460,10 +460,16 @@ impl Explorer {
         let camera = self.camera();
         let (done, _) = self.samples();
         match self.knobs.whitted(self.width, self.height, done.max(1)) {
-            Ok(settings) => {
-                self.gpu
-                    .render(&self.scene, &camera, &self.knobs, &settings, &self.image)
-            }
+            // A GPU frame takes seconds on a CPU's Vulkan driver: it is
+            // rendered for the finished view, not for every preview and
+            // refinement on the way, so the window stays live.
+            Ok(settings) => self.gpu.render(
+                &self.scene,
+                &camera,
+                &self.knobs,
+                &settings,
+                (&self.image, self.is_settled()),
+            ),
             Err(error) => self.gpu.refuse(format!("no GPU half: {error}")),
         }
         if let Some(why) = self.gpu.refusal()

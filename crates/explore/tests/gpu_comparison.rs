@@ -185,3 +185,44 @@ fn with_no_gpu_adapter_g_says_so_in_one_line_and_the_explorer_goes_on() {
     let image = image::open(&shot).unwrap().to_rgb8();
     assert_eq!(image.dimensions(), (96, 64));
 }
+
+#[test]
+fn while_the_camera_moves_the_gpu_half_waits_for_the_view_to_be_still() {
+    if !adapter_exists() {
+        return;
+    }
+    let mut explorer = Explorer::new(Loaded::lab(), W, H);
+    key(&mut explorer, 'g');
+    explorer.settle(10);
+    assert!(explorer.gpu().frame((W, H)).is_some());
+    // A drag: a preview of one ray per pixel, with no GPU frame behind it.
+    let button = raylab_explore::Button::Left;
+    explorer.handle(Input::Press {
+        button,
+        x: 50.0,
+        y: 50.0,
+    });
+    explorer.handle(Input::Move { x: 90.0, y: 60.0 });
+    assert!(explorer.frame());
+    assert_eq!(explorer.samples(), (1, 5));
+    assert!(
+        explorer.gpu().is_pending(),
+        "{:?}",
+        explorer.gpu().outcome()
+    );
+    assert!(
+        explorer.scene_frame() == *explorer.image(),
+        "the CPU's image alone"
+    );
+    explorer.handle(Input::Release {
+        button,
+        x: 90.0,
+        y: 60.0,
+    });
+    explorer.settle(10);
+    let gpu = explorer
+        .gpu()
+        .frame((W, H))
+        .expect("a GPU frame once still");
+    assert!(gpu.agreement.meets_lab_tolerance());
+}
