@@ -37,6 +37,19 @@ pub struct GpuFrame {
     pub agreement: Agreement,
 }
 
+/// The view the CPU just rendered, for the shader to render again.
+#[derive(Clone, Copy)]
+pub struct CpuFrame<'a> {
+    pub scene: &'a Scene,
+    pub camera: &'a Camera,
+    pub knobs: &'a Knobs,
+    pub settings: &'a Settings,
+    /// The CPU's image, which the GPU's is compared with.
+    pub cpu: &'a RgbImage,
+    /// Whether it is finished (not a preview or a refinement on the way).
+    pub still: bool,
+}
+
 /// What the comparison has to show.
 #[derive(Clone, Debug)]
 pub enum Outcome {
@@ -118,32 +131,26 @@ impl Comparison {
         self.outcome = Outcome::Refused(why);
     }
 
-    /// Render the view the CPU just rendered as `cpu` with `settings`, if
-    /// it is `still` (finished), and compare; the outcome replaces the last
-    /// one. A view still on its way is only checked for a refusal.
-    pub fn render(
-        &mut self,
-        scene: &Scene,
-        camera: &Camera,
-        knobs: &Knobs,
-        settings: &Settings,
-        (cpu, still): (&RgbImage, bool),
-    ) {
-        self.outcome = match self.try_render(scene, camera, knobs, settings, (cpu, still)) {
+    /// Render the view the CPU just rendered, if it is finished, and
+    /// compare; the outcome replaces the last one. A view still on its way
+    /// is only checked for a refusal.
+    pub fn render(&mut self, view: &CpuFrame) {
+        self.outcome = match self.try_render(view) {
             Ok(Some(frame)) => Outcome::Frame(frame),
             Ok(None) => Outcome::Pending,
             Err(why) => Outcome::Refused(why),
         };
     }
 
-    fn try_render(
-        &mut self,
-        scene: &Scene,
-        camera: &Camera,
-        knobs: &Knobs,
-        settings: &Settings,
-        (cpu, still): (&RgbImage, bool),
-    ) -> Result<Option<GpuFrame>, String> {
+    fn try_render(&mut self, view: &CpuFrame) -> Result<Option<GpuFrame>, String> {
+        let CpuFrame {
+            scene,
+            camera,
+            knobs,
+            settings,
+            cpu,
+            still,
+        } = *view;
         if knobs.paths {
             return Err(
                 "no GPU half in path tracing: chapter 10's shader traces chapters 1–5 \
@@ -229,19 +236,28 @@ mod tests {
         comparison.toggle();
         let (scene, camera) = (Scene::lab(), Camera::lab());
         let cpu = RgbImage::new(8, 6);
-        let mut knobs = Knobs {
+        let knobs = Knobs {
             spp: 16,
             ..Knobs::default()
         };
         let settings = knobs.whitted(8, 6, 16).unwrap();
-        comparison.render(&scene, &camera, &knobs, &settings, (&cpu, true));
+        let view = |knobs| CpuFrame {
+            scene: &scene,
+            camera: &camera,
+            knobs,
+            settings: &settings,
+            cpu: &cpu,
+            still: true,
+        };
+        comparison.render(&view(&knobs));
         let why = comparison.refusal().unwrap();
         assert!(
             why.contains("16 rays/px") && why.contains("jittered"),
             "{why}"
         );
-        knobs.chapter(6);
-        comparison.render(&scene, &camera, &knobs, &settings, (&cpu, true));
+        let mut paths = knobs;
+        paths.chapter(6);
+        comparison.render(&view(&paths));
         assert!(comparison.refusal().unwrap().contains("path tracing"));
         assert!(comparison.device.is_none());
     }

@@ -14,7 +14,7 @@ use raylab::{Camera, Keep, NoProgress, Scene, Vec3};
 use raylab_cli::probe_text::{self, Listing};
 use rayon::prelude::*;
 
-use crate::gpu::Comparison;
+use crate::gpu::{Comparison, CpuFrame};
 use crate::input::{Button, Input, Key};
 use crate::knobs::Knobs;
 use crate::orbit::View;
@@ -463,13 +463,14 @@ impl Explorer {
             // A GPU frame takes seconds on a CPU's Vulkan driver: it is
             // rendered for the finished view, not for every preview and
             // refinement on the way, so the window stays live.
-            Ok(settings) => self.gpu.render(
-                &self.scene,
-                &camera,
-                &self.knobs,
-                &settings,
-                (&self.image, self.is_settled()),
-            ),
+            Ok(settings) => self.gpu.render(&CpuFrame {
+                scene: &self.scene,
+                camera: &camera,
+                knobs: &self.knobs,
+                settings: &settings,
+                cpu: &self.image,
+                still: self.is_settled(),
+            }),
             Err(error) => self.gpu.refuse(format!("no GPU half: {error}")),
         }
         if let Some(why) = self.gpu.refusal()
