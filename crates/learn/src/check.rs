@@ -287,7 +287,7 @@ fn build(lab: &Lab, exercise: &Exercise, out: &mut dyn Write) -> Result<Built, V
     )
 }
 
-pub(crate) fn first_build_note(out: &mut dyn Write) {
+fn first_build_note(out: &mut dyn Write) {
     let _ = writeln!(
         out,
         "  building your exercise for the first time (a minute or two; later checks take seconds) …"

@@ -20,9 +20,7 @@ use std::path::Path;
 
 use ch10_gpu::shader::Source;
 
-use crate::check::{
-    Limits, Picture, Verdict, cargo_build, first_build_note, render_and_compare, size_flags,
-};
+use crate::check::{Limits, Picture, Verdict, cargo_build, render_and_compare, size_flags};
 use crate::lab::Lab;
 use crate::run::shown;
 use crate::shader::{CHAPTER, NAME, PACKAGE, PAGE, STAGES, Stage};
@@ -100,7 +98,12 @@ fn check_steps(lab: &Lab, limits: Limits, out: &mut dyn Write) -> Verdict {
 fn build_program(lab: &Lab, out: &mut dyn Write) -> Result<std::path::PathBuf, Verdict> {
     let binary = format!("{PACKAGE}{}", std::env::consts::EXE_SUFFIX);
     if !lab.target.join("debug").join(&binary).exists() {
-        first_build_note(out);
+        let _ = writeln!(
+            out,
+            "  building {PACKAGE} for the first time (seconds where the workspace is built; \
+             later checks only run it) …"
+        );
+        let _ = out.flush();
     }
     let built = cargo_build(
         &lab.root.join("Cargo.toml"),
