@@ -9,6 +9,11 @@
 // Edit this file and run `cargo run -p ch10-gpu -- --watch`: the program
 // renders again on every save. A mistake prints naga's message with its
 // line and column, and the last good shader stays in use.
+//
+// `cargo run -p learn -- start shader` hands this file out with the lab's
+// three tasks blanked (the `todo_` regions in `trace_ray`: the shadow
+// feeler, the reflection push, the refraction push), and `check shader`
+// judges them by chapters 2-4's pictures.
 
 // ANCHOR: inputs
 // What every invocation reads: the camera, the light, the ground, the
@@ -359,9 +364,11 @@ fn trace_ray(
     // Chapter 3: the mirror share, along the mirror direction.
     let r = hit.reflection;
     if (params.features & REFLECTION) != 0u && r > 0.0 {
+        // ANCHOR: todo_reflection "Push the mirror share r: reflected = Pending(start, d, r, 0u, REFLECTED), d the normalised reflect(ray.direction, hit.facing_normal), start params.epsilon along d; the local light keeps the rest (kept -= r)."
         let d = normalize(reflect(ray.direction, hit.facing_normal));
         reflected = Pending(hit.point + d * params.epsilon, d, r, 0u, REFLECTED);
         kept -= r;
+        // ANCHOR_END: todo_reflection
     }
     // ANCHOR_END: reflection
 
@@ -369,12 +376,14 @@ fn trace_ray(
     // Chapter 2: a feeler towards the sun decides k.
     var k = SUN_LIT;
     if (params.features & SHADOWS) != 0u {
+        // ANCHOR: todo_shadow_feeler "Cast the feeler towards the sun (params.to_sun), started params.epsilon along it from hit.point and counted as a SHADOW ray (count, work.rays): k = SUN_IN_SHADOW if any_hit finds anything in the way."
         count(work, SHADOW);
         work.rays += 1u;
         let feeler = hit.point + params.to_sun * params.epsilon;
         if any_hit(feeler, params.to_sun) {
             k = SUN_IN_SHADOW;
         }
+        // ANCHOR_END: todo_shadow_feeler
     }
     let local = local_light(hit, k);
     // ANCHOR_END: shadow_feeler
@@ -384,6 +393,7 @@ fn trace_ray(
     // mirrored inside when no refracted direction exists.
     let t = hit.transmission;
     if (params.features & TRANSMISSION) != 0u && t > 0.0 {
+        // ANCHOR: todo_refraction "Push the transmitted share t: eta = 1/ior going in (hit.entering), ior coming out; refract(ray.direction, hit.facing_normal, eta) is all zeros past the critical angle, then send t along the mirror direction as TOTAL_INTERNAL, else along the normalised bent ray as REFRACTED, each started params.epsilon along itself; kept -= t."
         let eta = select(hit.ior, 1.0 / hit.ior, hit.entering);
         let bent = refract(ray.direction, hit.facing_normal, eta);
         if all(bent == vec3<f32>(0.0)) {
@@ -394,6 +404,7 @@ fn trace_ray(
             transmitted = Pending(hit.point + d * params.epsilon, d, t, 0u, REFRACTED);
         }
         kept -= t;
+        // ANCHOR_END: todo_refraction
     }
     // ANCHOR_END: refraction
 

@@ -126,6 +126,7 @@ fn check_steps(lab: &Lab, exercise: &Exercise, limits: Limits, out: &mut dyn Wri
         package: exercise.package,
         flags: exercise.flags,
         dir: folder.join("check"),
+        ..Picture::default()
     };
     let verdict = render_and_compare(&picture, &program, &here, limits.render, out);
     if verdict.passed() {
@@ -247,8 +248,8 @@ fn check_core_steps(
     let picture = Picture {
         number: exercise.chapter,
         package,
-        flags: &[],
         dir: lab.core_check_dir(exercise),
+        ..Picture::default()
     };
     let verdict = render_and_compare(&picture, &program, &here, limits.render, out);
     if verdict.passed() {
@@ -297,7 +298,7 @@ fn first_build_note(out: &mut dyn Write) {
 /// `cargo build` of the workspace at `manifest` into `target`, with the
 /// compiler's messages shown as they are, each `(from, to)` of `shown_as`
 /// replaced (the learner's files are compiled from a copy).
-fn cargo_build(
+pub(crate) fn cargo_build(
     manifest: &Path,
     target: &Path,
     args: &[&str],
@@ -399,24 +400,38 @@ fn run_tests(
 }
 
 /// The size flags both renders use.
-fn size_flags() -> [String; 2] {
+pub(crate) fn size_flags() -> [String; 2] {
     [format!("--width={WIDTH}"), format!("--height={HEIGHT}")]
 }
 
 /// What the picture check renders, and where it writes what it finds.
-struct Picture<'a> {
+#[derive(Default)]
+pub(crate) struct Picture<'a> {
     /// The chapter whose reference image it is compared with.
-    number: u8,
+    pub number: u8,
     /// That chapter's package, for the reference's probe command.
-    package: &'a str,
+    pub package: &'a str,
     /// Flags besides the size.
-    flags: &'a [&'a str],
+    pub flags: &'a [&'a str],
     /// Where the learner's, the reference's and the difference images go.
-    dir: PathBuf,
+    pub dir: PathBuf,
+    /// What the mismatch's first line says: "its render (160×120) differs
+    /// from the reference" when `None`.
+    pub headline: Option<String>,
+    /// For a program that traces no single pixel (chapter 10 on the GPU
+    /// has no `--probe`): the command that renders the learner's image
+    /// again, shown instead of the probe of theirs.
+    pub again: Option<String>,
+    /// Words in the program's error that mean it cannot run on this
+    /// machine at all ("no GPU adapter found"): not the learner's doing.
+    pub unavailable: Option<&'a str>,
+    /// A scene file to render instead of the lab scene, both the
+    /// learner's image and the reference.
+    pub scene: Option<PathBuf>,
 }
 
 /// Render the learner's program small and compare it with the reference.
-fn render_and_compare(
+pub(crate) fn render_and_compare(
     picture: &Picture,
     program: &Path,
     here: &Path,
@@ -425,10 +440,20 @@ fn render_and_compare(
 ) -> Verdict {
     let dir = &picture.dir;
     let scratch = dir.join("render");
+    let reference = match reference_image_in(picture.number, picture.scene.as_deref()) {
+        Ok(reference) => reference,
+        Err(why) => return Verdict::Broken(why),
+    };
     let mut command = std::process::Command::new(program);
     command
         .args(size_flags())
         .args(picture.flags)
+        .args(
+            picture
+                .scene
+                .as_ref()
+                .map(|f| format!("--scene={}", f.display())),
+        )
         .arg("--no-diagrams")
         .arg(format!("--out={}", scratch.display()))
         .env("RUST_BACKTRACE", "0");
@@ -447,6 +472,13 @@ fn render_and_compare(
     if !output.success() {
         let why = panic_message(&output.stderr)
             .unwrap_or_else(|| output.stderr.lines().last().unwrap_or("").to_owned());
+        if picture.unavailable.is_some_and(|words| why.contains(words)) {
+            // The program's own error, without its name: learn says it.
+            let why = why
+                .split_once(": error: ")
+                .map_or(why.as_str(), |(_, rest)| rest);
+            return Verdict::Broken(why.to_owned());
+        }
         let _ = writeln!(out, "  ✗ its render stopped: {why}");
         return Verdict::RenderPanicked(why);
     }
@@ -462,13 +494,12 @@ fn render_and_compare(
         Ok(image) => image.to_rgb8(),
         Err(e) => return Verdict::Broken(format!("cannot read the render: {e}")),
     };
-    let reference = reference_image(picture.number);
     let comparison = compare(&learner, &reference);
     if comparison.meets_lab_tolerance() {
         return Verdict::Passed;
     }
     report_difference(
-        picture.package,
+        picture,
         &comparison,
         (&learner, &reference),
         program,
@@ -482,7 +513,7 @@ fn render_and_compare(
 /// The mismatch, as `idiff` would put it, with the three images and the
 /// probe commands that show the worst pixel's ray trees.
 fn report_difference(
-    package: &str,
+    picture: &Picture,
     comparison: &Comparison,
     (learner, reference): (&RgbImage, &RgbImage),
     program: &Path,
@@ -490,10 +521,14 @@ fn report_difference(
     here: &Path,
     out: &mut dyn Write,
 ) {
+    let headline = picture
+        .headline
+        .clone()
+        .unwrap_or_else(|| format!("its render ({WIDTH}×{HEIGHT}) differs from the reference"));
     let _ = writeln!(
         out,
-        "  ✗ its render ({WIDTH}×{HEIGHT}) differs from the reference: {:.1} % of pixels within 3 \
-         of 255 (needs 99.5 %), mean difference {:.2} (needs under 0.5)",
+        "  ✗ {headline}: {:.1} % of pixels within 3 of 255 (needs 99.5 %), mean difference {:.2} \
+         (needs under 0.5)",
         comparison.within_3 * 100.0,
         comparison.mean
     );
@@ -531,12 +566,29 @@ fn report_difference(
             shown(dir, here)
         );
     }
-    if let Some(w) = comparison.worst {
-        let [width, height] = size_flags();
+    let Some(w) = comparison.worst else { return };
+    let [width, height] = size_flags();
+    let package = picture.package;
+    let scene = picture
+        .scene
+        .as_ref()
+        .map(|file| format!(" --scene={}", shown(file, here)))
+        .unwrap_or_default();
+    if let Some(again) = &picture.again {
+        let _ = writeln!(
+            out,
+            "      that pixel's ray tree in the reference: cargo run -p {package} --{scene} {width} \
+             {height} --probe={},{} --out={}\n      your render again (the GPU traces no single \
+             pixel): {again}",
+            w.x,
+            w.y,
+            shown(&dir.join("probe-reference"), here),
+        );
+    } else {
         let _ = writeln!(
             out,
             "      that pixel's ray tree, yours:        {} {width} {height} --probe={},{} --out={}\n      \
-             and the reference's: cargo run -p {} -- {width} {height} --probe={},{} --out={}",
+             and the reference's: cargo run -p {} --{scene} {width} {height} --probe={},{} --out={}",
             shown(program, here),
             w.x,
             w.y,
@@ -560,14 +612,32 @@ fn non_finite(summary: &str) -> Option<usize> {
 
 /// The reference chapter's render at the check's size.
 pub fn reference_image(number: u8) -> RgbImage {
+    let lab = (Scene::lab(), Camera::lab());
     match number {
-        1 => small_render(&ch01_ray_cast::CHAPTER),
-        2 => small_render(&ch02_shadows::CHAPTER),
-        3 => small_render(&ch03_reflection::CHAPTER),
-        4 => small_render(&ch04_refraction::CHAPTER),
-        5 => small_render(&ch05_antialiasing::CHAPTER),
+        1 => small_render(&ch01_ray_cast::CHAPTER, &lab),
+        2 => small_render(&ch02_shadows::CHAPTER, &lab),
+        3 => small_render(&ch03_reflection::CHAPTER, &lab),
+        4 => small_render(&ch04_refraction::CHAPTER, &lab),
+        5 => small_render(&ch05_antialiasing::CHAPTER, &lab),
         _ => small_path_traced(),
     }
+}
+
+/// The reference chapter's render of a scene file (chapters 1–5), or of
+/// the lab scene when there is none.
+fn reference_image_in(number: u8, scene: Option<&Path>) -> Result<RgbImage, String> {
+    let Some(file) = scene else {
+        return Ok(reference_image(number));
+    };
+    let scene = raylab_cli::scene_file::load(file).map_err(|e| e.to_string())?;
+    Ok(match number {
+        1 => small_render(&ch01_ray_cast::CHAPTER, &scene),
+        2 => small_render(&ch02_shadows::CHAPTER, &scene),
+        3 => small_render(&ch03_reflection::CHAPTER, &scene),
+        4 => small_render(&ch04_refraction::CHAPTER, &scene),
+        5 => small_render(&ch05_antialiasing::CHAPTER, &scene),
+        _ => return Err(format!("chapter {number} renders no scene file in a check")),
+    })
 }
 
 /// Chapter 6's reference at the check's size and flags, traced eight
@@ -586,14 +656,14 @@ fn small_path_traced() -> RgbImage {
     rendered.image.to_srgb8()
 }
 
-fn small_render<S: Step>(chapter: &Chapter<S>) -> RgbImage {
+fn small_render<S: Step>(chapter: &Chapter<S>, (scene, camera): &(Scene, Camera)) -> RgbImage {
     let mut args = vec![chapter.binary.to_owned()];
     args.extend(size_flags());
     let options = Options::parse_for(chapter, args).expect("the check's flags parse");
     let settings = options.settings().expect("the check's size is allowed");
     let rendered = render(
-        &Scene::lab(),
-        &Camera::lab(),
+        scene,
+        camera,
         &chapter.step,
         &settings,
         Keep::IMAGE,
@@ -611,5 +681,42 @@ mod tests {
         let line = "ch02-shadows: 160×120 …; WARNING: 37 pixels were NaN or infinite\n";
         assert_eq!(non_finite(line), Some(37));
         assert_eq!(non_finite("ch02-shadows: 160×120, 1 spp\n"), None);
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_program_that_finds_no_gpu_adapter_is_a_check_that_could_not_run() {
+        let dir = tempfile::tempdir().unwrap();
+        let program = dir.path().join("no-gpu");
+        // Written by a shell, not by this process: a file this process
+        // held open for writing while another test forked could not be run
+        // ("text file busy").
+        let script =
+            "#!/bin/sh\necho 'ch10-gpu: error: no GPU adapter found (none here)' >&2\nexit 2\n";
+        let made = std::process::Command::new("sh")
+            .arg("-c")
+            .arg(format!(
+                "printf '%s' \"$0\" > '{0}' && chmod +x '{0}'",
+                program.display()
+            ))
+            .arg(script)
+            .status()
+            .unwrap();
+        assert!(made.success());
+        let picture = Picture {
+            number: 2,
+            package: "ch02-shadows",
+            dir: dir.path().join("check"),
+            unavailable: Some("no GPU adapter found"),
+            ..Picture::default()
+        };
+        let mut out = Vec::new();
+        let limit = Duration::from_secs(10);
+        let verdict = render_and_compare(&picture, &program, dir.path(), limit, &mut out);
+        assert_eq!(
+            verdict,
+            Verdict::Broken("no GPU adapter found (none here)".into())
+        );
+        assert!(out.is_empty(), "{}", String::from_utf8_lossy(&out));
     }
 }

@@ -164,8 +164,20 @@ pub struct Blanked {
 const START: &str = "// ANCHOR: todo_";
 const END: &str = "// ANCHOR_END: todo_";
 
-/// Blank every marked region of `source`.
+/// Blank every marked region of `source` with `todo!("task")`.
 pub fn blank(source: &str) -> Result<Blanked, MarkerError> {
+    blank_with(source, |indent, task| {
+        format!("{indent}todo!({:?})\n", task.text)
+    })
+}
+
+/// Blank every marked region of `source` with what `stub` makes of the
+/// marker's indent and the region's task: a language without `todo!`
+/// (chapter 10's WGSL) gets a blank of its own.
+pub fn blank_with(
+    source: &str,
+    stub: impl Fn(&str, &Task) -> String,
+) -> Result<Blanked, MarkerError> {
     let mut exercise = String::with_capacity(source.len());
     let mut solution = String::with_capacity(source.len());
     let mut tasks = Vec::new();
@@ -187,7 +199,7 @@ pub fn blank(source: &str) -> Result<Blanked, MarkerError> {
                 )
             })?;
             let indent = &line[..line.len() - trimmed.len()];
-            exercise.push_str(&format!("{indent}todo!({:?})\n", task.text));
+            exercise.push_str(&stub(indent, &task));
             open = Some((number, task));
         } else if let Some(name) = trimmed.strip_prefix(END) {
             match open.take() {

@@ -11,6 +11,8 @@ use learn::check::{Limits, RENDER_TIME_LIMIT, TEST_TIME_LIMIT, check, check_core
 use learn::exercise::blank;
 use learn::lab::Lab;
 use learn::path::{self, Item};
+use learn::shader;
+use learn::shader_check::check_shader;
 
 /// Do the lab yourself: write the tracer's core and each chapter's step,
 /// each checked by its tests and against the reference image.
@@ -24,7 +26,8 @@ struct Cli {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Lay an exercise out in my-lab/ (never overwrites your files): a core
-    /// exercise by name (`sphere`), a chapter's step by number (`2`)
+    /// exercise by name (`sphere`), a chapter's step by number (`2`), or
+    /// chapter 10's shader (`shader`)
     Start { exercise: String },
     /// Build an exercise, run its tests, compare its render with the reference
     Check { exercise: String },
@@ -84,6 +87,7 @@ fn run(cli: Cli) -> Result<ExitCode, ExitCode> {
             let verdict = match find(&exercise)? {
                 Item::Core(core) => check_core(&lab, core, Limits::DEFAULT, &mut out),
                 Item::Chapter(chapter) => check(&lab, chapter, &mut out),
+                Item::Shader => check_shader(&lab, Limits::DEFAULT, &mut out),
             };
             Ok(exit_for(&verdict))
         }
@@ -98,14 +102,26 @@ fn run(cli: Cli) -> Result<ExitCode, ExitCode> {
             let page = match item {
                 Item::Core(_) => learn::core::PAGE,
                 Item::Chapter(chapter) => chapter.page,
+                Item::Shader => shader::PAGE,
             };
-            let _ = writeln!(
-                out,
-                "The check runs the exercise's tests (stopped after {} s) and renders 160×120 \
-                 (stopped after {} s). The book: {page}",
-                TEST_TIME_LIMIT.as_secs(),
-                RENDER_TIME_LIMIT.as_secs(),
-            );
+            if item == Item::Shader {
+                let _ = writeln!(
+                    out,
+                    "The check asks naga whether the shader compiles, then renders it 160×120 \
+                     like chapters 2, 3 and 4 (each stopped after {} s; it needs a GPU adapter, \
+                     lavapipe will do) and compares each with the chapter's own render. The \
+                     book: {page}",
+                    RENDER_TIME_LIMIT.as_secs(),
+                );
+            } else {
+                let _ = writeln!(
+                    out,
+                    "The check runs the exercise's tests (stopped after {} s) and renders \
+                     160×120 (stopped after {} s). The book: {page}",
+                    TEST_TIME_LIMIT.as_secs(),
+                    RENDER_TIME_LIMIT.as_secs(),
+                );
+            }
             Ok(ExitCode::SUCCESS)
         }
         Command::List => {
@@ -144,7 +160,8 @@ fn run(cli: Cli) -> Result<ExitCode, ExitCode> {
 /// `learn start`: lay the exercise out and say what to write where.
 fn start(lab: &Lab, item: Item, out: &mut dyn Write) -> Result<(), ExitCode> {
     let name = item.name();
-    let (started, tasks, file_of) = match item {
+    // A last word after the tasks, where the exercise needs one.
+    let (started, tasks, note) = match item {
         Item::Core(core) => {
             let started = lab
                 .start_core(core, false)
@@ -159,7 +176,9 @@ fn start(lab: &Lab, item: Item, out: &mut dyn Write) -> Result<(), ExitCode> {
                     }
                 }
             }
-            (started, tasks, None)
+            let note = "between its marker lines, which the check needs: it uses the reference \
+                        for every region you have not passed yet";
+            (started, tasks, Some(note.to_owned()))
         }
         Item::Chapter(chapter) => {
             let started = lab
@@ -173,7 +192,32 @@ fn start(lab: &Lab, item: Item, out: &mut dyn Write) -> Result<(), ExitCode> {
                 .flat_map(|b| b.tasks)
                 .map(|task| (task, chapter.step.to_owned()))
                 .collect();
-            (started, tasks, Some(chapter))
+            (started, tasks, None)
+        }
+        Item::Shader => {
+            let started = lab.start_shader(false).map_err(|e| usage(e.to_string()))?;
+            let mut tasks: Vec<_> = lab
+                .shader_text(false)
+                .map(|(_, tasks)| tasks)
+                .unwrap_or_default()
+                .into_iter()
+                .map(|task| (task, shader::FILE.to_owned()))
+                .collect();
+            // In the order the check judges them, not the file's.
+            tasks.sort_by_key(|(task, _)| {
+                shader::STAGES
+                    .iter()
+                    .position(|stage| stage.region == task.name)
+            });
+            let file = lab.shader_file();
+            let note = format!(
+                "as handed out it compiles and renders, with no shadows and no mirror or glass: \
+                 watch yours live with `cargo run -p {} -- --watch --shader {} --like \
+                 ch04-refraction`",
+                shader::PACKAGE,
+                file.strip_prefix(&lab.root).unwrap_or(&file).display()
+            );
+            (started, tasks, Some(note))
         }
     };
     let folder = started
@@ -199,12 +243,8 @@ fn start(lab: &Lab, item: Item, out: &mut dyn Write) -> Result<(), ExitCode> {
             task.text
         );
     }
-    if file_of.is_none() {
-        let _ = writeln!(
-            out,
-            "  (between its marker lines, which the check needs: it uses the reference for every \
-             region you have not passed yet)"
-        );
+    if let Some(note) = note {
+        let _ = writeln!(out, "  ({note})");
     }
     let _ = writeln!(
         out,

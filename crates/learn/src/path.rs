@@ -1,10 +1,11 @@
-//! The whole path, from the empty skeleton to chapter 6: the core's
-//! exercises and the chapters' steps in one order, each with the name
-//! `start`, `check`, `watch` and `hint` take.
+//! The whole path, from the empty skeleton to chapter 10's shader: the
+//! core's exercises and the chapters' steps in one order, each with the
+//! name `start`, `check`, `watch` and `hint` take.
 
 use crate::core::{CoreExercise, core_exercise};
 use crate::exercise::{Exercise, exercise};
 use crate::lab::{Lab, Progress};
+use crate::shader;
 
 /// One exercise of the path.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -13,22 +14,32 @@ pub enum Item {
     Core(&'static CoreExercise),
     /// A chapter's step, by number: `2`.
     Chapter(&'static Exercise),
+    /// Chapter 10's shader with the lab's three tasks blanked: `shader`.
+    Shader,
 }
 
 /// The path, by name: each core piece just before the first chapter that
 /// shows it in a picture, so that a learner who starts from the empty
-/// skeleton sees their tracer grow chapter by chapter.
-pub const PATH: [&str; 15] = [
+/// skeleton sees their tracer grow chapter by chapter; the shader last,
+/// where chapter 10 stands.
+pub const PATH: [&str; 16] = [
     "ray", "camera", "sphere", "plane", "sky", "1", "srgb", "2", "reflect", "3", "refract", "4",
-    "stack", "5", "6",
+    "stack", "5", "6", "shader",
 ];
 
-/// The exercise called `name`: a core exercise's name or a chapter's number.
+/// The exercise called `name`: a core exercise's name or a chapter's
+/// number (chapter 10's is the shader).
 pub fn find(name: &str) -> Option<Item> {
     if let Some(core) = core_exercise(name) {
         return Some(Item::Core(core));
     }
+    if name == shader::NAME {
+        return Some(Item::Shader);
+    }
     let number: u8 = name.trim_start_matches("ch").parse().ok()?;
+    if number == shader::CHAPTER {
+        return Some(Item::Shader);
+    }
     exercise(number).map(Item::Chapter)
 }
 
@@ -48,6 +59,7 @@ impl Item {
         match self {
             Item::Core(core) => core.name.to_owned(),
             Item::Chapter(chapter) => chapter.number.to_string(),
+            Item::Shader => shader::NAME.to_owned(),
         }
     }
 
@@ -56,6 +68,7 @@ impl Item {
         match self {
             Item::Core(core) => format!("core: {}", core.title),
             Item::Chapter(chapter) => format!("chapter {}: {}", chapter.number, chapter.title),
+            Item::Shader => format!("chapter {}: {}", shader::CHAPTER, shader::TITLE),
         }
     }
 
@@ -63,6 +76,7 @@ impl Item {
         match self {
             Item::Core(core) => core.hint,
             Item::Chapter(chapter) => chapter.hint,
+            Item::Shader => shader::HINT,
         }
     }
 
@@ -70,6 +84,7 @@ impl Item {
         match self {
             Item::Core(core) => progress.core.contains(core.name),
             Item::Chapter(chapter) => progress.passed.contains(&chapter.number),
+            Item::Shader => progress.passed.contains(&shader::CHAPTER),
         }
     }
 
@@ -77,6 +92,7 @@ impl Item {
         match self {
             Item::Core(core) => lab.core_started(core),
             Item::Chapter(chapter) => lab.folder(chapter).join("src/lib.rs").is_file(),
+            Item::Shader => lab.shader_started(),
         }
     }
 }
@@ -91,7 +107,7 @@ mod tests {
     fn the_path_holds_every_exercise_once() {
         let all = items().count();
         assert_eq!(all, PATH.len());
-        assert_eq!(all, CORE_EXERCISES.len() + EXERCISES.len());
+        assert_eq!(all, CORE_EXERCISES.len() + EXERCISES.len() + 1);
     }
 
     #[test]
@@ -99,6 +115,8 @@ mod tests {
         assert_eq!(find("2").map(|i| i.name()), Some("2".into()));
         assert_eq!(find("ch02").map(|i| i.name()), Some("2".into()));
         assert_eq!(find("refract").map(|i| i.name()), Some("refract".into()));
+        assert_eq!(find("shader"), Some(Item::Shader));
+        assert_eq!(find("10"), Some(Item::Shader));
         assert_eq!(find("9"), None);
         assert_eq!(find("spheres"), None);
     }

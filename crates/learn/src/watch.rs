@@ -17,6 +17,7 @@ use notify::{RecursiveMode, Watcher};
 use crate::check::{Limits, Verdict, check, check_core};
 use crate::lab::Lab;
 use crate::path::Item;
+use crate::shader_check::check_shader;
 
 /// How long the files must stay quiet before the check: editors often
 /// save in several steps (truncate, write, rename).
@@ -39,6 +40,12 @@ pub fn watch(lab: &Lab, item: Item, out: &mut dyn Write) -> Result<(), String> {
         Item::Chapter(chapter) => (
             lab.folder(chapter),
             Box::new(move |out: &mut dyn Write| check(lab, chapter, out))
+                as Box<dyn Fn(&mut dyn Write) -> Verdict>,
+        ),
+        // The shader is in my-lab/ch10/src/, as a chapter's sources are.
+        Item::Shader => (
+            lab.shader_folder(),
+            Box::new(move |out: &mut dyn Write| check_shader(lab, Limits::DEFAULT, out))
                 as Box<dyn Fn(&mut dyn Write) -> Verdict>,
         ),
     };

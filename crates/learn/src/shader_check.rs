@@ -1,0 +1,170 @@
+//! `learn check shader`: does the learner's shader compile, and does it
+//! render chapters 2, 3 and 4 as those chapters do?
+//!
+//! naga (the WGSL compiler inside wgpu) parses and validates the file
+//! first, in this process, as chapter 10 does before it looks for a GPU:
+//! a mistake is one line with its line and column. Then the workspace's
+//! own `ch10-gpu` renders it, `--shader` the learner's file, once per
+//! [`STAGES`], each in a process of its own under the render's time limit
+//! (a shader that never ends is stopped, as a chapter's step is).
+//!
+//! The reference is each chapter's own render on the CPU, the images the
+//! chapters' checks compare with: the shader is meant to be the chapters'
+//! tracer, and chapter 10's tests hold the reference shader to those very
+//! images within LAB.md's tolerance, which covers the GPU's arithmetic.
+//! Rendering the reference shader instead would need the GPU twice and
+//! would only ever judge the learner against a copy of the same code.
+
+use std::io::Write;
+use std::path::Path;
+
+use ch10_gpu::shader::Source;
+
+use crate::check::{Limits, Picture, Verdict, cargo_build, render_and_compare, size_flags};
+use crate::lab::Lab;
+use crate::run::shown;
+use crate::shader::{CHAPTER, NAME, PACKAGE, PAGE, STAGES, Stage};
+
+/// The words of chapter 10's error when it finds no GPU adapter.
+const NO_ADAPTER: &str = "no GPU adapter found";
+
+/// Check the learner's shader, writing what it finds to `out` as it goes.
+pub fn check_shader(lab: &Lab, limits: Limits, out: &mut dyn Write) -> Verdict {
+    let verdict = check_steps(lab, limits, out);
+    if let Verdict::Broken(why) = &verdict {
+        let _ = writeln!(out, "learn: error: {why}");
+    }
+    verdict
+}
+
+fn check_steps(lab: &Lab, limits: Limits, out: &mut dyn Write) -> Verdict {
+    let here = std::env::current_dir().unwrap_or_default();
+    let file = lab.shader_file();
+    let name = shown(&file, &here);
+    if !file.is_file() {
+        let _ = writeln!(
+            out,
+            "learn: error: no exercise in {name}: make it with `cargo run -p learn -- start {NAME}`"
+        );
+        return Verdict::NoExercise;
+    }
+    let _ = writeln!(out, "chapter {CHAPTER}'s shader, {name}:");
+
+    let text = match std::fs::read_to_string(&file) {
+        Ok(text) => text,
+        Err(e) => return Verdict::Broken(format!("cannot read {name}: {e}")),
+    };
+    if let Err(error) = ch10_gpu::shader::check(&Source { name, text }) {
+        let _ = writeln!(out, "  ✗ it does not compile: {error}");
+        return Verdict::DoesNotCompile;
+    }
+    let _ = writeln!(out, "  ✓ it compiles (naga parses and validates it)");
+
+    let program = match build_program(lab, out) {
+        Ok(program) => program,
+        Err(verdict) => return verdict,
+    };
+    for stage in &STAGES {
+        let verdict = render_stage(lab, stage, &program, &here, limits, out);
+        if !verdict.passed() {
+            return verdict;
+        }
+        let _ = writeln!(
+            out,
+            "  ✓ {}, the render ({}×{}) matches chapter {}'s within LAB.md's tolerance: {} is \
+             right",
+            stage.label(),
+            crate::check::WIDTH,
+            crate::check::HEIGHT,
+            stage.chapter,
+            stage.task
+        );
+    }
+    let _ = writeln!(
+        out,
+        "Done: the shader passes. The reference is {} (and the book's {}).",
+        shown(&lab.shader_reference(), &here),
+        shown(&lab.root.join(PAGE), &here),
+    );
+    if let Err(error) = lab.record_pass(CHAPTER) {
+        let _ = writeln!(out, "learn: could not record the pass: {error}");
+    }
+    Verdict::Passed
+}
+
+/// The workspace's `ch10-gpu`, built into the lab's target folder: the
+/// first check links it (if `cargo test` or the main job has not), later
+/// ones find it up to date.
+fn build_program(lab: &Lab, out: &mut dyn Write) -> Result<std::path::PathBuf, Verdict> {
+    let binary = format!("{PACKAGE}{}", std::env::consts::EXE_SUFFIX);
+    if !lab.target.join("debug").join(&binary).exists() {
+        let _ = writeln!(
+            out,
+            "  building {PACKAGE} for the first time (seconds where the workspace is built; \
+             later checks only run it) …"
+        );
+        let _ = out.flush();
+    }
+    let built = cargo_build(
+        &lab.root.join("Cargo.toml"),
+        &lab.target,
+        &["-p", PACKAGE, "--bin", PACKAGE],
+        &[],
+        out,
+    )
+    .map_err(|verdict| match verdict {
+        // The program is the workspace's, not the learner's.
+        Verdict::DoesNotCompile => Verdict::Broken(format!(
+            "the workspace's {PACKAGE} does not build (see above)"
+        )),
+        other => other,
+    })?;
+    built
+        .program
+        .ok_or_else(|| Verdict::Broken(format!("the build made no {PACKAGE}")))
+}
+
+/// Render the shader like one chapter and compare it with that chapter.
+fn render_stage(
+    lab: &Lab,
+    stage: &Stage,
+    program: &Path,
+    here: &Path,
+    limits: Limits,
+    out: &mut dyn Write,
+) -> Verdict {
+    let like = format!("--like={}", stage.package);
+    let shader = format!("--shader={}", lab.shader_file().display());
+    let flags = [like.as_str(), shader.as_str()];
+    let [width, height] = size_flags();
+    let dir = lab.shader_check_dir();
+    let scene = stage.scene.map(|file| lab.root.join(file));
+    let scene_flag = scene
+        .as_ref()
+        .map(|file| format!(" --scene={}", shown(file, here)))
+        .unwrap_or_default();
+    let again = format!(
+        "cargo run -p {PACKAGE} -- --shader={} {like}{scene_flag} {width} {height} --out={}",
+        shown(&lab.shader_file(), here),
+        shown(&dir.join("yours"), here),
+    );
+    let picture = Picture {
+        number: stage.chapter,
+        package: stage.package,
+        flags: &flags,
+        dir,
+        headline: Some(format!(
+            "{}, the render differs from chapter {}'s, which adds {}: {} (`{}`) is not right \
+             yet",
+            stage.label(),
+            stage.chapter,
+            stage.shows,
+            stage.task,
+            stage.region
+        )),
+        again: Some(again),
+        unavailable: Some(NO_ADAPTER),
+        scene,
+    };
+    render_and_compare(&picture, program, here, limits.render, out)
+}
