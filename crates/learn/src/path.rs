@@ -3,7 +3,7 @@
 //! `start`, `check`, `watch` and `hint` take.
 
 use crate::core::{CoreExercise, core_exercise};
-use crate::exercise::{Exercise, exercise};
+use crate::exercise::{Exercise, exercise_named};
 use crate::lab::{Lab, Progress};
 
 /// One exercise of the path.
@@ -11,25 +11,26 @@ use crate::lab::{Lab, Progress};
 pub enum Item {
     /// A region of the core (`src/`), by name: `sphere`.
     Core(&'static CoreExercise),
-    /// A chapter's step, by number: `2`.
+    /// A chapter's step, by number (`2`), or another of its regions, by
+    /// name (`nee`).
     Chapter(&'static Exercise),
 }
 
 /// The path, by name: each core piece just before the first chapter that
 /// shows it in a picture, so that a learner who starts from the empty
 /// skeleton sees their tracer grow chapter by chapter.
-pub const PATH: [&str; 15] = [
+pub const PATH: [&str; 17] = [
     "ray", "camera", "sphere", "plane", "sky", "1", "srgb", "2", "reflect", "3", "refract", "4",
-    "stack", "5", "6",
+    "stack", "5", "6", "cosine", "nee",
 ];
 
-/// The exercise called `name`: a core exercise's name or a chapter's number.
+/// The exercise called `name`: a core exercise's name, a chapter's
+/// number, or the name of a chapter's other exercise.
 pub fn find(name: &str) -> Option<Item> {
     if let Some(core) = core_exercise(name) {
         return Some(Item::Core(core));
     }
-    let number: u8 = name.trim_start_matches("ch").parse().ok()?;
-    exercise(number).map(Item::Chapter)
+    exercise_named(name).map(Item::Chapter)
 }
 
 /// Every exercise, in the path's order.
@@ -47,7 +48,7 @@ impl Item {
     pub fn name(&self) -> String {
         match self {
             Item::Core(core) => core.name.to_owned(),
-            Item::Chapter(chapter) => chapter.number.to_string(),
+            Item::Chapter(chapter) => chapter.name(),
         }
     }
 
@@ -69,7 +70,10 @@ impl Item {
     pub fn passed(&self, progress: &Progress) -> bool {
         match self {
             Item::Core(core) => progress.core.contains(core.name),
-            Item::Chapter(chapter) => progress.passed.contains(&chapter.number),
+            Item::Chapter(chapter) => match chapter.name {
+                None => progress.passed.contains(&chapter.number),
+                Some(name) => progress.named.contains(name),
+            },
         }
     }
 
@@ -99,6 +103,7 @@ mod tests {
         assert_eq!(find("2").map(|i| i.name()), Some("2".into()));
         assert_eq!(find("ch02").map(|i| i.name()), Some("2".into()));
         assert_eq!(find("refract").map(|i| i.name()), Some("refract".into()));
+        assert_eq!(find("nee").map(|i| i.name()), Some("nee".into()));
         assert_eq!(find("9"), None);
         assert_eq!(find("spheres"), None);
     }
