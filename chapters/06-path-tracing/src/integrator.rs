@@ -321,6 +321,7 @@ mod tests {
     use super::*;
     use raylab::Material;
 
+    // ANCHOR: cosine_tests
     /// `k` cosine-weighted directions about `n`, from a fixed seed.
     fn cosine_directions(n: Vec3, k: u32) -> Vec<Vec3> {
         let mut random = Random(raylab::sampling::sample_rng(
@@ -408,6 +409,8 @@ mod tests {
         }
     }
 
+    // ANCHOR_END: cosine_tests
+
     /// The lab's tracer with lab materials and a point sun.
     fn lab_tracer(scene: &Scene) -> PathTracer<'_> {
         PathTracer {
@@ -434,6 +437,7 @@ mod tests {
         }
     }
 
+    // ANCHOR: lobe_tests
     #[test]
     fn a_matte_surface_always_takes_the_diffuse_lobe() {
         let scene = Scene::lab();
@@ -492,6 +496,9 @@ mod tests {
         );
     }
 
+    // ANCHOR_END: lobe_tests
+
+    // ANCHOR: nee_tests
     /// A diffuse hit of albedo `albedo` at `point`, facing `normal`.
     fn matte_hit(point: Vec3, normal: Vec3, albedo: f32) -> Hit {
         Hit {
@@ -597,4 +604,5 @@ mod tests {
         );
         assert_eq!(rays, k, "one shadow ray per draw");
     }
+    // ANCHOR_END: nee_tests
 }
