@@ -14,6 +14,7 @@
 //! chapter has its own integrator ([`integrator`]) and its own render loop
 //! ([`render`]) instead of a `raylab::Step`.
 
+pub mod agreement;
 pub mod caustics;
 pub mod exr;
 pub mod integrator;

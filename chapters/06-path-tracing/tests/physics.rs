@@ -1,5 +1,6 @@
 //! Chapter 6 against what is known: closed forms, a furnace, itself.
 
+use ch06_path_tracing::agreement::{sidak_threshold, z_test};
 use ch06_path_tracing::random::Random;
 use ch06_path_tracing::sun::Sunlight;
 use ch06_path_tracing::{Materials, PathRender, PathSettings, PathTracer, Terms, render_paths};
@@ -28,47 +29,6 @@ fn settings(width: u32, height: u32, spp: u32, seed: u64) -> PathSettings {
 
 fn lab(settings: &PathSettings) -> PathRender {
     render_paths(&Scene::lab(), &Camera::lab(), settings, &NoProgress)
-}
-
-/// The per-test threshold for `tests` z-tests that together fail with
-/// probability `alpha` (Šidák): `|z|` beyond it has chance `1 − (1 − α)^(1/m)`.
-fn sidak_threshold(alpha: f64, tests: usize) -> f64 {
-    let per_test = 1.0 - (1.0 - alpha).powf(1.0 / tests as f64);
-    // Invert the normal tail by bisection: P(|Z| > z) = erfc(z/√2).
-    let (mut lo, mut hi) = (0.0f64, 10.0f64);
-    for _ in 0..100 {
-        let mid = 0.5 * (lo + hi);
-        if erfc(mid / std::f64::consts::SQRT_2) > per_test {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    lo
-}
-
-/// The complementary error function (Numerical Recipes' erfcc, |error| < 1.2e-7).
-fn erfc(x: f64) -> f64 {
-    let z = x.abs();
-    let t = 1.0 / (1.0 + 0.5 * z);
-    let r = t
-        * (-z * z - 1.26551223
-            + t * (1.00002368
-                + t * (0.37409196
-                    + t * (0.09678418
-                        + t * (-0.18628806
-                            + t * (0.27886807
-                                + t * (-1.13520398
-                                    + t * (1.48851587 + t * (-0.82215223 + t * 0.17087277)))))))))
-            .exp();
-    if x >= 0.0 { r } else { 2.0 - r }
-}
-
-#[test]
-fn the_sidak_threshold_for_one_test_at_5_percent_is_1_96() {
-    assert!((sidak_threshold(0.05, 1) - 1.959_964).abs() < 1e-4);
-    // One in a million per test for 10,000 tests: |z| > 4.89.
-    assert!((sidak_threshold(0.01, 10_000) - 4.89).abs() < 0.01);
 }
 
 #[test]
@@ -201,28 +161,20 @@ fn two_seeds_give_images_that_agree_within_their_own_variance() {
     let b = lab(&settings(40, 30, 64, 2));
     assert_ne!(a.image, b.image, "different seeds, different noise");
     let threshold = sidak_threshold(0.01, 40 * 30 * 3);
-    let mut worst = 0.0f64;
-    for (p, ((ma, va), (mb, vb))) in a
-        .image
-        .pixels()
-        .iter()
-        .zip(a.variance.pixels())
-        .zip(b.image.pixels().iter().zip(b.variance.pixels()))
-        .enumerate()
-    {
-        for c in 0..3 {
-            let spread = f64::from(va[c] + vb[c]).sqrt();
-            let difference = f64::from(ma[c] - mb[c]);
-            if spread == 0.0 {
-                assert!(difference.abs() < 1e-6, "pixel {p}: {} vs {}", ma[c], mb[c]);
-                continue;
-            }
-            let z = difference / spread;
-            worst = worst.max(z.abs());
-            assert!(z.abs() < threshold, "pixel {p} channel {c}: z = {z:.2}");
-        }
-    }
-    println!("largest |z| of 3600: {worst:.2} (threshold {threshold:.2})");
+    let agreement = z_test((&a.image, &a.variance), (&b.image, &b.variance));
+    let worst = agreement.worst.expect("the images have pixels");
+    assert!(
+        worst.z.abs() < threshold,
+        "pixel ({}, {}) channel {}: z = {:.2} (threshold {threshold:.2})",
+        worst.x,
+        worst.y,
+        worst.channel,
+        worst.z
+    );
+    println!(
+        "largest |z| of 3600: {:.2} (threshold {threshold:.2})",
+        worst.z.abs()
+    );
 }
 
 #[test]

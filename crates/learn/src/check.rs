@@ -14,6 +14,7 @@ use crate::core::CoreExercise;
 use crate::core_lab::{package_name, program_name};
 use crate::exercise::Exercise;
 use crate::lab::Lab;
+use crate::noisy::NoiseAgreement;
 use crate::run::{
     Built, TestResult, built_from_messages, cargo, panic_message, parse_test_output,
     run_with_limit, shown,
@@ -50,6 +51,9 @@ pub enum Verdict {
     RenderTimedOut,
     NonFinite(usize),
     Differs(Comparison),
+    /// Chapter 6: the render is further from the reference than the two
+    /// renders' noise allows.
+    NoisyDiffers(NoiseAgreement),
     /// The learner's file lost the marker lines the check needs.
     Markers(String),
     /// Something outside the learner's code went wrong (cargo missing …).
@@ -83,14 +87,32 @@ pub fn check(lab: &Lab, exercise: &Exercise, out: &mut dyn Write) -> Verdict {
 
 /// [`check`] with other time limits (the author checks use short ones).
 pub fn check_with(lab: &Lab, exercise: &Exercise, limits: Limits, out: &mut dyn Write) -> Verdict {
-    let verdict = check_steps(lab, exercise, limits, out);
+    let verdict = check_steps(lab, exercise, limits, true, out);
     if let Verdict::Broken(why) = &verdict {
         let _ = writeln!(out, "learn: error: {why}");
     }
     verdict
 }
 
-fn check_steps(lab: &Lab, exercise: &Exercise, limits: Limits, out: &mut dyn Write) -> Verdict {
+/// The check without the exercise's tests: build, render, compare. For
+/// the author checks, which show that the picture alone catches a wrong
+/// answer the tests catch first. A pass is not recorded.
+pub fn check_picture_with(
+    lab: &Lab,
+    exercise: &Exercise,
+    limits: Limits,
+    out: &mut dyn Write,
+) -> Verdict {
+    check_steps(lab, exercise, limits, false, out)
+}
+
+fn check_steps(
+    lab: &Lab,
+    exercise: &Exercise,
+    limits: Limits,
+    with_tests: bool,
+    out: &mut dyn Write,
+) -> Verdict {
     let folder = lab.folder(exercise);
     let here = std::env::current_dir().unwrap_or_default();
     let name = shown(&folder, &here);
@@ -98,7 +120,7 @@ fn check_steps(lab: &Lab, exercise: &Exercise, limits: Limits, out: &mut dyn Wri
         let _ = writeln!(
             out,
             "learn: error: no exercise in {name}: make it with `cargo run -p learn -- start {}`",
-            exercise.number
+            exercise.name()
         );
         return Verdict::NoExercise;
     }
@@ -117,7 +139,7 @@ fn check_steps(lab: &Lab, exercise: &Exercise, limits: Limits, out: &mut dyn Wri
     };
     let _ = writeln!(out, "  ✓ it compiles");
 
-    if let Err(verdict) = run_tests(&tests, &folder, &[], limits.tests, out) {
+    if with_tests && let Err(verdict) = run_tests(&tests, &folder, &[], limits.tests, out) {
         return verdict;
     }
 
@@ -128,17 +150,25 @@ fn check_steps(lab: &Lab, exercise: &Exercise, limits: Limits, out: &mut dyn Wri
         dir: folder.join("check"),
         ..Picture::default()
     };
-    let verdict = render_and_compare(&picture, &program, &here, limits.render, out);
-    if verdict.passed() {
+    let verdict = if exercise.judged_statistically() {
+        render_and_judge(&picture, &program, &here, limits.render, out)
+    } else {
+        render_and_compare(&picture, &program, &here, limits.render, out)
+    };
+    if verdict.passed() && with_tests {
+        if !exercise.judged_statistically() {
+            let _ = writeln!(
+                out,
+                "  ✓ its render ({WIDTH}×{HEIGHT}) matches the reference within LAB.md's tolerance"
+            );
+        }
         let _ = writeln!(
             out,
-            "  ✓ its render ({WIDTH}×{HEIGHT}) matches the reference within LAB.md's tolerance\n\
-             Done: chapter {} passes. The reference solution is {} (and the book's {}).",
-            exercise.number,
+            "Done: {exercise} passes. The reference solution is {} (and the book's {}).",
             shown(&lab.reference_source(exercise), &here),
             shown(&lab.root.join(exercise.page), &here),
         );
-        if let Err(error) = lab.record_pass(exercise.number) {
+        if let Err(error) = lab.record_exercise_pass(exercise) {
             let _ = writeln!(out, "learn: could not record the pass: {error}");
         }
     }
@@ -274,7 +304,11 @@ fn build(lab: &Lab, exercise: &Exercise, out: &mut dyn Write) -> Result<Built, V
     let folder = lab.folder(exercise);
     // The first build of an exercise compiles the core for it (the
     // libraries under it come from the workspace's own build).
-    let program = format!("my-{}{}", exercise.package, std::env::consts::EXE_SUFFIX);
+    let program = format!(
+        "{}{}",
+        lab.program_name(exercise),
+        std::env::consts::EXE_SUFFIX
+    );
     if !lab.target.join("debug").join(program).exists() {
         first_build_note(out);
     }
@@ -430,20 +464,15 @@ pub(crate) struct Picture<'a> {
     pub scene: Option<PathBuf>,
 }
 
-/// Render the learner's program small and compare it with the reference.
-pub(crate) fn render_and_compare(
+/// Render the learner's program small into `picture.dir/render/`: the
+/// folder, or why it made no picture.
+fn render_learner(
     picture: &Picture,
     program: &Path,
-    here: &Path,
     limit: Duration,
     out: &mut dyn Write,
-) -> Verdict {
-    let dir = &picture.dir;
-    let scratch = dir.join("render");
-    let reference = match reference_image_in(picture.number, picture.scene.as_deref()) {
-        Ok(reference) => reference,
-        Err(why) => return Verdict::Broken(why),
-    };
+) -> Result<PathBuf, Verdict> {
+    let scratch = picture.dir.join("render");
     let mut command = std::process::Command::new(program);
     command
         .args(size_flags())
@@ -457,17 +486,15 @@ pub(crate) fn render_and_compare(
         .arg("--no-diagrams")
         .arg(format!("--out={}", scratch.display()))
         .env("RUST_BACKTRACE", "0");
-    let output = match run_with_limit(command, limit) {
-        Ok(output) => output,
-        Err(e) => return Verdict::Broken(format!("cannot run {}: {e}", program.display())),
-    };
+    let output = run_with_limit(command, limit)
+        .map_err(|e| Verdict::Broken(format!("cannot run {}: {e}", program.display())))?;
     if output.timed_out() {
         let _ = writeln!(
             out,
             "  ✗ its render ({WIDTH}×{HEIGHT}) did not finish in {} s and was stopped: does a loop never end?",
             limit.as_secs_f64()
         );
-        return Verdict::RenderTimedOut;
+        return Err(Verdict::RenderTimedOut);
     }
     if !output.success() {
         let why = panic_message(&output.stderr)
@@ -477,10 +504,10 @@ pub(crate) fn render_and_compare(
             let why = why
                 .split_once(": error: ")
                 .map_or(why.as_str(), |(_, rest)| rest);
-            return Verdict::Broken(why.to_owned());
+            return Err(Verdict::Broken(why.to_owned()));
         }
         let _ = writeln!(out, "  ✗ its render stopped: {why}");
-        return Verdict::RenderPanicked(why);
+        return Err(Verdict::RenderPanicked(why));
     }
     if let Some(n) = non_finite(&output.stdout) {
         let _ = writeln!(
@@ -488,8 +515,28 @@ pub(crate) fn render_and_compare(
             "  ✗ its render made {n} NaN or infinite pixels (shown black): a division by zero, \
              or the square root of a negative number?"
         );
-        return Verdict::NonFinite(n);
+        return Err(Verdict::NonFinite(n));
     }
+    Ok(scratch)
+}
+
+/// Render the learner's program small and compare it with the reference.
+pub(crate) fn render_and_compare(
+    picture: &Picture,
+    program: &Path,
+    here: &Path,
+    limit: Duration,
+    out: &mut dyn Write,
+) -> Verdict {
+    let dir = &picture.dir;
+    let reference = match reference_image_in(picture.number, picture.scene.as_deref()) {
+        Ok(reference) => reference,
+        Err(why) => return Verdict::Broken(why),
+    };
+    let scratch = match render_learner(picture, program, limit, out) {
+        Ok(scratch) => scratch,
+        Err(verdict) => return verdict,
+    };
     let learner = match image::open(scratch.join("render.png")) {
         Ok(image) => image.to_rgb8(),
         Err(e) => return Verdict::Broken(format!("cannot read the render: {e}")),
@@ -508,6 +555,47 @@ pub(crate) fn render_and_compare(
         out,
     );
     Verdict::Differs(comparison)
+}
+
+/// Render the learner's path tracer small and judge it against the
+/// reference, rendered with the same flags, within their noise.
+fn render_and_judge(
+    picture: &Picture,
+    program: &Path,
+    here: &Path,
+    limit: Duration,
+    out: &mut dyn Write,
+) -> Verdict {
+    let scratch = match render_learner(picture, program, limit, out) {
+        Ok(scratch) => scratch,
+        Err(verdict) => return verdict,
+    };
+    let learner = match crate::noisy::read_render(&scratch) {
+        Ok(learner) => learner,
+        Err(why) => return Verdict::Broken(why),
+    };
+    let mut args = vec![ch06_path_tracing::PROGRAM.program.binary.to_owned()];
+    args.extend(size_flags());
+    args.extend(picture.flags.iter().map(|f| (*f).to_owned()));
+    let reference = crate::noisy::reference(args);
+    let agreement = crate::noisy::judge(&learner, &reference, &picture.dir, here, out);
+    if agreement.passes() {
+        let _ = writeln!(
+            out,
+            "  ✓ its render ({WIDTH}×{HEIGHT}, {}) matches the reference within the two renders' \
+             own noise: {:.3} % of pixel channels over {} standard errors (chance allows {} %), \
+             mean z {:+.3}, largest |z| {:.1}",
+            picture.flags.join(" "),
+            agreement.far_share() * 100.0,
+            ch06_path_tracing::agreement::FAR,
+            crate::noisy::MAX_FAR_SHARE * 100.0,
+            agreement.mean_z,
+            agreement.worst.map_or(0.0, |w| w.z.abs()),
+        );
+        Verdict::Passed
+    } else {
+        Verdict::NoisyDiffers(agreement)
+    }
 }
 
 /// The mismatch, as `idiff` would put it, with the three images and the
@@ -640,20 +728,13 @@ fn reference_image_in(number: u8, scene: Option<&Path>) -> Result<RgbImage, Stri
     })
 }
 
-/// Chapter 6's reference at the check's size and flags, traced eight
-/// paths at a time by chapter 8 (chapter 6's bytes, sooner).
+/// Chapter 6's reference at the check's size and flags (as 8-bit sRGB).
 fn small_path_traced() -> RgbImage {
-    use ch06_path_tracing::run;
-    let program = &ch06_path_tracing::PROGRAM.program;
-    let mut args = vec![program.binary.to_owned()];
+    let mut args = vec![ch06_path_tracing::PROGRAM.program.binary.to_owned()];
     args.extend(size_flags());
     let flags = crate::exercise::exercise(6).map_or(&[][..], |e| e.flags);
     args.extend(flags.iter().map(|f| (*f).to_owned()));
-    let (options, chapter_flags) = run::parse(program, args).expect("the check's flags parse");
-    let settings = run::settings(&options, &chapter_flags).expect("the check's size is allowed");
-    let rendered =
-        ch08_eight_paths::render_eight(&Scene::lab(), &Camera::lab(), &settings, &NoProgress);
-    rendered.image.to_srgb8()
+    crate::noisy::reference(args).image.to_srgb8()
 }
 
 fn small_render<S: Step>(chapter: &Chapter<S>, (scene, camera): &(Scene, Camera)) -> RgbImage {

@@ -19,10 +19,20 @@
 
 use std::fmt;
 
-/// One chapter that can be done as an exercise.
+/// One step of a chapter that can be done as an exercise: the chapter's
+/// own step, taken by the chapter's number, or another region of it, taken
+/// by its name (chapter 6's `cosine` and `nee`). Each is its chapter's
+/// crate with only its regions blanked, standing on the reference for the
+/// rest, as chapter 3's exercise stands on the reference chapters 1 and 2.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Exercise {
     pub number: u8,
+    /// The name `start` and `check` take besides the number: `None` for
+    /// the chapter's own step, which the number names.
+    pub name: Option<&'static str>,
+    /// The regions of `step` the learner writes, by their marker names:
+    /// the chapter's other regions stay as the chapter solves them.
+    pub regions: &'static [&'static str],
     /// The chapter's folder, from the workspace's root.
     pub dir: &'static str,
     /// The chapter's package (and program) name.
@@ -34,16 +44,19 @@ pub struct Exercise {
     /// The file of the chapter's crate that holds the step, from its folder.
     pub step: &'static str,
     /// Flags the check renders with besides its size (chapter 6: fewer
-    /// paths, so that the learner's debug build renders in seconds).
+    /// paths than its default, so that the learner's debug build renders in
+    /// seconds).
     pub flags: &'static [&'static str],
     /// What to do, in a few lines, for `learn hint`.
     pub hint: &'static str,
 }
 
 /// Every exercise, in the book's order.
-pub const EXERCISES: [Exercise; 6] = [
+pub const EXERCISES: [Exercise; 8] = [
     Exercise {
         number: 1,
+        name: None,
+        regions: &["local_light"],
         dir: "chapters/01-ray-cast",
         package: "ch01-ray-cast",
         title: "Lambert and the sun (`local_light`)",
@@ -57,6 +70,8 @@ pub const EXERCISES: [Exercise; 6] = [
     },
     Exercise {
         number: 2,
+        name: None,
+        regions: &["sun_factor"],
         dir: "chapters/02-shadows",
         package: "ch02-shadows",
         title: "the shadow feeler (`sun_factor`)",
@@ -71,6 +86,8 @@ pub const EXERCISES: [Exercise; 6] = [
     },
     Exercise {
         number: 3,
+        name: None,
+        regions: &["send_reflection"],
         dir: "chapters/03-reflection",
         package: "ch03-reflection",
         title: "sending the reflection (`send_reflection`)",
@@ -84,6 +101,8 @@ pub const EXERCISES: [Exercise; 6] = [
     },
     Exercise {
         number: 4,
+        name: None,
+        regions: &["send_refraction"],
         dir: "chapters/04-refraction",
         package: "ch04-refraction",
         title: "sending the refraction (`send_refraction`)",
@@ -99,6 +118,8 @@ pub const EXERCISES: [Exercise; 6] = [
     },
     Exercise {
         number: 5,
+        name: None,
+        regions: &["lab_five"],
         dir: "chapters/05-antialiasing",
         package: "ch05-antialiasing",
         title: "the lab's five rays (`lab_five`)",
@@ -113,25 +134,94 @@ pub const EXERCISES: [Exercise; 6] = [
     },
     Exercise {
         number: 6,
+        name: None,
+        regions: &["choose_lobe"],
         dir: "chapters/06-path-tracing",
         package: "ch06-path-tracing",
         title: "the choice of lobe (`choose_lobe`)",
         page: "book/src/ch06-path-tracing.md",
         step: "src/integrator.rs",
-        flags: &["--spp=16"],
+        flags: CHAPTER_6_FLAGS,
         hint: "A surface that neither reflects nor transmits (r + t = 0) is diffuse, whatever u \
                is. Otherwise the shares are (mirror, refraction) = (r, t), or, with \
                `Materials::Fresnel` on a material that transmits, (s·F, s·(1 − F)) with s = r + t \
                and F = `fresnel(d.dot(hit.facing_normal), eta(hit))`. Then cut [0, 1) in that \
                order: u below the mirror's share is the mirror, below mirror + refraction the \
-               refraction, the rest diffuse. The order matters: the check compares your image with \
-               the reference made from the same random numbers.",
+               refraction, the rest diffuse. Any order of the three is right: the check compares \
+               your image with the reference within the two images' own noise.",
+    },
+    Exercise {
+        number: 6,
+        name: Some("cosine"),
+        regions: &["cosine_direction"],
+        dir: "chapters/06-path-tracing",
+        package: "ch06-path-tracing",
+        title: "cosine directions (`cosine_direction`)",
+        page: "book/src/ch06-path-tracing.md",
+        step: "src/integrator.rs",
+        flags: CHAPTER_6_FLAGS,
+        hint: "The density cos θ/π is what a uniform point on the unit disc becomes when it is \
+               lifted straight up onto the hemisphere (Malley's method): draw x, y uniform in \
+               [−1, 1) with `random.uniform()` until x² + y² < 1, then z = √(1 − x² − y²). Or \
+               invert it directly: cos θ = √(1 − u₁), φ = 2π·u₂. `n.any_orthonormal_pair()` gives \
+               t and b at right angles to n; the direction is x·t + y·b + z·n. Any correct \
+               sampler passes, whatever numbers it draws.",
+    },
+    Exercise {
+        number: 6,
+        name: Some("nee"),
+        regions: &["sun_next_event"],
+        dir: "chapters/06-path-tracing",
+        package: "ch06-path-tracing",
+        title: "next-event estimation (`sun_next_event`)",
+        page: "book/src/ch06-path-tracing.md",
+        step: "src/integrator.rs",
+        flags: CHAPTER_6_FLAGS,
+        hint: "`self.sun.draw(random)` is the direction to the sun (a point of its disc with \
+               `--sun-size`); cos θ = `hit.facing_normal.dot(it)`. At or below 0 the sun is behind \
+               the surface: Vec3::ZERO, and no ray. Otherwise count the shadow ray (`*rays += 1`), \
+               start it `self.epsilon` along the direction (from `hit.point` itself the surface \
+               shadows itself) and ask `self.objects.any_hit`: blocked, Vec3::ZERO; open, \
+               `hit.material.albedo()` · FRAC_1_PI · `self.sun.irradiance` · cos θ.",
     },
 ];
 
-/// The exercise for chapter `number`, if there is one.
+/// The flags chapter 6's check renders with besides its size: enough paths
+/// per pixel that a biased estimate stands out of the noise (at 16, a
+/// uniform hemisphere sampler without its weight is barely caught, and
+/// the noise's own tails come close to the bar), few enough that a debug
+/// build renders in a second or two.
+const CHAPTER_6_FLAGS: &[&str] = &["--spp=64"];
+
+/// The exercise for chapter `number`'s own step, if there is one.
 pub fn exercise(number: u8) -> Option<&'static Exercise> {
-    EXERCISES.iter().find(|e| e.number == number)
+    EXERCISES
+        .iter()
+        .find(|e| e.number == number && e.name.is_none())
+}
+
+/// A chapter's exercise by its name (`cosine`), or its own step by its
+/// number (`6`, `ch06`).
+pub fn exercise_named(name: &str) -> Option<&'static Exercise> {
+    if let Some(named) = EXERCISES.iter().find(|e| e.name == Some(name)) {
+        return Some(named);
+    }
+    exercise(name.trim_start_matches("ch").parse().ok()?)
+}
+
+impl Exercise {
+    /// The name `start` and `check` take: `2`, `cosine`.
+    pub fn name(&self) -> String {
+        self.name
+            .map_or_else(|| self.number.to_string(), str::to_owned)
+    }
+
+    /// Whether its picture is path traced, and so judged against the
+    /// reference within the two renders' own noise (a per-pixel z-test)
+    /// rather than pixel by pixel: chapter 6.
+    pub fn judged_statistically(&self) -> bool {
+        self.number == 6
+    }
 }
 
 /// One region of a chapter's source that the learner writes.
@@ -166,9 +256,13 @@ const END: &str = "// ANCHOR_END: todo_";
 
 /// Blank every marked region of `source` with `todo!("task")`.
 pub fn blank(source: &str) -> Result<Blanked, MarkerError> {
-    blank_with(source, |indent, task| {
-        format!("{indent}todo!({:?})\n", task.text)
-    })
+    blank_regions(source, |_| true, todo)
+}
+
+/// Blank the marked regions of `source` that `take` picks by name; the
+/// others keep their code, without their markers, as in the solution.
+pub fn blank_only(source: &str, take: impl Fn(&str) -> bool) -> Result<Blanked, MarkerError> {
+    blank_regions(source, take, todo)
 }
 
 /// Blank every marked region of `source` with what `stub` makes of the
@@ -176,6 +270,20 @@ pub fn blank(source: &str) -> Result<Blanked, MarkerError> {
 /// (chapter 10's WGSL) gets a blank of its own.
 pub fn blank_with(
     source: &str,
+    stub: impl Fn(&str, &Task) -> String,
+) -> Result<Blanked, MarkerError> {
+    blank_regions(source, |_| true, stub)
+}
+
+/// Rust's blank: `todo!("task")` at the marker's indent.
+fn todo(indent: &str, task: &Task) -> String {
+    format!("{indent}todo!({:?})\n", task.text)
+}
+
+/// Blank the regions `take` picks with `stub`; keep the others' code.
+fn blank_regions(
+    source: &str,
+    take: impl Fn(&str) -> bool,
     stub: impl Fn(&str, &Task) -> String,
 ) -> Result<Blanked, MarkerError> {
     let mut exercise = String::with_capacity(source.len());
@@ -198,8 +306,10 @@ pub fn blank_with(
                     "a todo marker is `// ANCHOR: todo_NAME \"one-line task\"`".into(),
                 )
             })?;
-            let indent = &line[..line.len() - trimmed.len()];
-            exercise.push_str(&stub(indent, &task));
+            if take(&task.name) {
+                let indent = &line[..line.len() - trimmed.len()];
+                exercise.push_str(&stub(indent, &task));
+            }
             open = Some((number, task));
         } else if let Some(name) = trimmed.strip_prefix(END) {
             match open.take() {
@@ -214,7 +324,7 @@ pub fn blank_with(
         } else {
             solution.push_str(line);
             solution.push('\n');
-            if open.is_none() {
+            if open.as_ref().is_none_or(|(_, task)| !take(&task.name)) {
                 exercise.push_str(line);
                 exercise.push('\n');
             }
@@ -246,7 +356,10 @@ fn error(line: usize, what: String) -> MarkerError {
 
 impl fmt::Display for Exercise {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "chapter {} ({})", self.number, self.package)
+        match self.name {
+            None => write!(f, "chapter {} ({})", self.number, self.package),
+            Some(name) => write!(f, "chapter {}'s `{name}` ({})", self.number, self.package),
+        }
     }
 }
 
@@ -314,14 +427,54 @@ pub fn double(x: u32) -> u32 {
     }
 
     #[test]
-    fn every_chapter_marks_exactly_one_step_to_write() {
+    fn only_the_regions_picked_are_blanked_and_every_marker_goes() {
+        let source = format!("{SOURCE}{}", SOURCE.replace("double", "twice"));
+        let blanked = blank_only(&source, |name| name == "twice").unwrap();
+        assert!(
+            blanked
+                .exercise
+                .contains("    // Why: because.\n    x * 2\n")
+        );
+        assert!(blanked.exercise.contains("todo!(\"Return twice x.\")"));
+        assert!(!blanked.exercise.contains("ANCHOR"), "{}", blanked.exercise);
+        assert_eq!(blanked.tasks.len(), 2, "both are read");
+    }
+
+    #[test]
+    fn every_region_of_a_chapter_is_one_exercise_and_every_exercise_names_its_regions() {
         let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
         for exercise in EXERCISES {
             let path = format!("{root}/{}/{}", exercise.dir, exercise.step);
             let source = std::fs::read_to_string(&path).unwrap();
             let blanked = blank(&source).unwrap_or_else(|e| panic!("{path}: {e}"));
-            assert_eq!(blanked.tasks.len(), 1, "{path}");
-            assert!(blanked.exercise.contains("todo!("), "{path}");
+            for task in &blanked.tasks {
+                let owners = EXERCISES
+                    .iter()
+                    .filter(|e| e.dir == exercise.dir && e.regions.contains(&task.name.as_str()))
+                    .count();
+                assert_eq!(owners, 1, "{path}: region `{}`", task.name);
+            }
+            for region in exercise.regions {
+                assert!(
+                    blanked.tasks.iter().any(|t| t.name == *region),
+                    "{exercise}: no region `{region}` in {path}"
+                );
+            }
         }
+    }
+
+    #[test]
+    fn a_chapters_step_is_found_by_its_number_and_its_other_exercises_by_name() {
+        assert_eq!(exercise_named("6").and_then(|e| e.name), None);
+        assert_eq!(exercise_named("ch06").map(|e| e.number), Some(6));
+        assert_eq!(
+            exercise_named("nee").map(|e| e.regions),
+            Some(&["sun_next_event"][..])
+        );
+        assert_eq!(
+            exercise_named("cosine").map(Exercise::name),
+            Some("cosine".into())
+        );
+        assert_eq!(exercise_named("lobe"), None);
     }
 }

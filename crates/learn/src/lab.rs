@@ -14,7 +14,7 @@ use std::collections::BTreeSet;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use crate::exercise::{Exercise, blank};
+use crate::exercise::{Exercise, blank_only};
 
 /// Where a lab lives: the workspace it builds against, the learner's
 /// folder, and the target folder the exercises share.
@@ -82,9 +82,32 @@ impl Lab {
         }
     }
 
-    /// The folder of one exercise, e.g. `my-lab/ch02`.
+    /// The folder of one exercise, e.g. `my-lab/ch02`, `my-lab/ch06-nee`.
     pub fn folder(&self, exercise: &Exercise) -> PathBuf {
-        self.dir.join(format!("ch{:02}", exercise.number))
+        match exercise.name {
+            None => self.dir.join(format!("ch{:02}", exercise.number)),
+            Some(name) => self.dir.join(format!("ch{:02}-{name}", exercise.number)),
+        }
+    }
+
+    /// The package version of one exercise's crate: a chapter's named
+    /// exercises are the chapter's package too, and each must be a build
+    /// of its own (see [`Lab::version`]).
+    fn package_version(&self, exercise: &Exercise) -> String {
+        match exercise.name {
+            None => self.version.clone(),
+            Some(name) if self.version.contains('-') => format!("{}.{name}", self.version),
+            Some(name) => format!("{}-{name}", self.version),
+        }
+    }
+
+    /// The learner's program, `my-ch06-path-tracing` or, for a named
+    /// exercise, `my-ch06-path-tracing-nee`: never the chapter's own.
+    pub fn program_name(&self, exercise: &Exercise) -> String {
+        match exercise.name {
+            None => format!("my-{}", exercise.package),
+            Some(name) => format!("my-{}-{name}", exercise.package),
+        }
     }
 
     /// The chapter's own source, the reference solution.
@@ -100,16 +123,19 @@ impl Lab {
         solved: bool,
     ) -> Result<Vec<(PathBuf, String)>, LabError> {
         let chapter = self.root.join(exercise.dir);
-        let step_path = chapter.join(exercise.step);
-        let blanked = blank(&read(&step_path)?).map_err(|source| LabError::Marker {
-            path: step_path.clone(),
-            source,
-        })?;
-        let step = if solved {
-            blanked.solution
-        } else {
-            blanked.exercise
+        // Only the exercise's regions are blanked, in the step and in
+        // every other file; the chapter's other regions stay solved.
+        let blanked = |path: &Path| {
+            blank_only(&read(path)?, |region| {
+                !solved && exercise.regions.contains(&region)
+            })
+            .map(|b| b.exercise)
+            .map_err(|source| LabError::Marker {
+                path: path.to_owned(),
+                source,
+            })
         };
+        let step = blanked(&chapter.join(exercise.step))?;
         let manifest = self.manifest(exercise)?;
         let lock = read(&self.root.join("Cargo.lock"))?;
         let mut files = vec![
@@ -126,7 +152,7 @@ impl Lab {
         for name in rust_files(&src, Path::new(""))? {
             let file = PathBuf::from("src").join(&name);
             if file != Path::new(exercise.step) {
-                files.push((file, read(&src.join(&name))?));
+                files.push((file, blanked(&src.join(&name))?));
             }
         }
         Ok(files)
@@ -178,13 +204,14 @@ impl Lab {
             "# Your exercise for {exercise}, made by `cargo run -p learn -- start {}`.\n\
              # Its own workspace, built against the finished core and earlier chapters.\n\
              [package]\nname = \"{package}\"\nversion = \"{version}\"\nedition = \"2024\"\npublish = false\n\n\
-             # Your program is `my-{package}`, so that it never takes the place of the\n\
+             # Your program is `{program}`, so that it never takes the place of the\n\
              # chapter's own `{package}` in the shared target folder.\n\
-             [[bin]]\nname = \"my-{package}\"\npath = \"src/main.rs\"\n\n\
+             [[bin]]\nname = \"{program}\"\npath = \"src/main.rs\"\n\n\
              [dependencies]\n",
-            exercise.number,
+            exercise.name(),
             package = exercise.package,
-            version = self.version,
+            program = self.program_name(exercise),
+            version = self.package_version(exercise),
         );
         // The chapter's own unit tests come with its sources, so the
         // libraries they use come along too.
@@ -261,6 +288,19 @@ impl Lab {
         Ok(())
     }
 
+    /// Record that a chapter's exercise passed: its own step by number, a
+    /// named one by name.
+    pub fn record_exercise_pass(&self, exercise: &Exercise) -> Result<(), LabError> {
+        let Some(name) = exercise.name else {
+            return self.record_pass(exercise.number);
+        };
+        let mut progress = self.progress();
+        if progress.named.insert(name.to_owned()) {
+            self.save_progress(&progress)?;
+        }
+        Ok(())
+    }
+
     /// Record that the core exercise `name` passed its check.
     pub fn record_core_pass(&self, name: &str) -> Result<(), LabError> {
         let mut progress = self.progress();
@@ -273,7 +313,8 @@ impl Lab {
     fn save_progress(&self, progress: &Progress) -> Result<(), LabError> {
         let text = toml::to_string(progress).expect("sets of numbers and names serialise");
         let text = format!(
-            "# Chapters (`passed`) and core exercises (`core`) whose check passed\n\
+            "# Chapters (`passed`), their named exercises (`named`) and core exercises\n\
+             # (`core`) whose check passed\n\
              # (`cargo run -p learn -- list`).\n{text}"
         );
         write_atomically(&self.progress_path(), &text)
@@ -301,6 +342,9 @@ pub(crate) fn inline_spec(spec: &toml::Value, path: impl Fn(&str) -> String) -> 
 pub struct Progress {
     #[serde(default)]
     pub passed: BTreeSet<u8>,
+    /// The chapters' named exercises passed (`cosine`).
+    #[serde(default, skip_serializing_if = "BTreeSet::is_empty")]
+    pub named: BTreeSet<String>,
     /// The core exercises passed, by name.
     #[serde(default)]
     pub core: BTreeSet<String>,

@@ -190,6 +190,7 @@ fn start(lab: &Lab, item: Item, out: &mut dyn Write) -> Result<(), ExitCode> {
             let tasks = blanked
                 .into_iter()
                 .flat_map(|b| b.tasks)
+                .filter(|task| chapter.regions.contains(&task.name.as_str()))
                 .map(|task| (task, chapter.step.to_owned()))
                 .collect();
             (started, tasks, None)

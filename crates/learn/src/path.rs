@@ -3,7 +3,7 @@
 //! name `start`, `check`, `watch` and `hint` take.
 
 use crate::core::{CoreExercise, core_exercise};
-use crate::exercise::{Exercise, exercise};
+use crate::exercise::{Exercise, exercise_named};
 use crate::lab::{Lab, Progress};
 use crate::shader;
 
@@ -12,7 +12,8 @@ use crate::shader;
 pub enum Item {
     /// A region of the core (`src/`), by name: `sphere`.
     Core(&'static CoreExercise),
-    /// A chapter's step, by number: `2`.
+    /// A chapter's step, by number (`2`), or another of its regions, by
+    /// name (`nee`).
     Chapter(&'static Exercise),
     /// Chapter 10's shader with the lab's three tasks blanked: `shader`.
     Shader,
@@ -22,25 +23,22 @@ pub enum Item {
 /// shows it in a picture, so that a learner who starts from the empty
 /// skeleton sees their tracer grow chapter by chapter; the shader last,
 /// where chapter 10 stands.
-pub const PATH: [&str; 16] = [
+pub const PATH: [&str; 18] = [
     "ray", "camera", "sphere", "plane", "sky", "1", "srgb", "2", "reflect", "3", "refract", "4",
-    "stack", "5", "6", "shader",
+    "stack", "5", "6", "cosine", "nee", "shader",
 ];
 
-/// The exercise called `name`: a core exercise's name or a chapter's
-/// number (chapter 10's is the shader).
+/// The exercise called `name`: a core exercise's name, a chapter's
+/// number (chapter 10's is the shader), or the name of a chapter's other
+/// exercise.
 pub fn find(name: &str) -> Option<Item> {
     if let Some(core) = core_exercise(name) {
         return Some(Item::Core(core));
     }
-    if name == shader::NAME {
+    if name == shader::NAME || name.trim_start_matches("ch").parse() == Ok(shader::CHAPTER) {
         return Some(Item::Shader);
     }
-    let number: u8 = name.trim_start_matches("ch").parse().ok()?;
-    if number == shader::CHAPTER {
-        return Some(Item::Shader);
-    }
-    exercise(number).map(Item::Chapter)
+    exercise_named(name).map(Item::Chapter)
 }
 
 /// Every exercise, in the path's order.
@@ -58,7 +56,7 @@ impl Item {
     pub fn name(&self) -> String {
         match self {
             Item::Core(core) => core.name.to_owned(),
-            Item::Chapter(chapter) => chapter.number.to_string(),
+            Item::Chapter(chapter) => chapter.name(),
             Item::Shader => shader::NAME.to_owned(),
         }
     }
@@ -83,7 +81,10 @@ impl Item {
     pub fn passed(&self, progress: &Progress) -> bool {
         match self {
             Item::Core(core) => progress.core.contains(core.name),
-            Item::Chapter(chapter) => progress.passed.contains(&chapter.number),
+            Item::Chapter(chapter) => match chapter.name {
+                None => progress.passed.contains(&chapter.number),
+                Some(name) => progress.named.contains(name),
+            },
             Item::Shader => progress.passed.contains(&shader::CHAPTER),
         }
     }
@@ -117,6 +118,7 @@ mod tests {
         assert_eq!(find("refract").map(|i| i.name()), Some("refract".into()));
         assert_eq!(find("shader"), Some(Item::Shader));
         assert_eq!(find("10"), Some(Item::Shader));
+        assert_eq!(find("nee").map(|i| i.name()), Some("nee".into()));
         assert_eq!(find("9"), None);
         assert_eq!(find("spheres"), None);
     }
