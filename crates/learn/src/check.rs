@@ -520,6 +520,19 @@ fn render_learner(
     Ok(scratch)
 }
 
+/// Write each `(name, image)` into `dir`, saying which could not be
+/// written; whether all were.
+pub(crate) fn save_images(images: &[(&str, RgbImage)], dir: &Path, out: &mut dyn Write) -> bool {
+    let mut saved = true;
+    for (name, image) in images {
+        if let Err(e) = raylab_cli::output::save_png(image, &dir.join(name)) {
+            let _ = writeln!(out, "      could not write {name}: {e}");
+            saved = false;
+        }
+    }
+    saved
+}
+
 /// Render the learner's program small and compare it with the reference.
 pub(crate) fn render_and_compare(
     picture: &Picture,
@@ -639,14 +652,7 @@ fn report_difference(
         ("reference.png", reference.clone()),
         ("difference.png", signed_difference(learner, reference)),
     ];
-    let mut saved = true;
-    for (name, image) in &images {
-        if let Err(e) = raylab_cli::output::save_png(image, &dir.join(name)) {
-            let _ = writeln!(out, "      could not write {name}: {e}");
-            saved = false;
-        }
-    }
-    if saved {
+    if save_images(&images, dir, out) {
         let _ = writeln!(
             out,
             "      look at {}/learner.png, reference.png and difference.png (red: yours brighter, \

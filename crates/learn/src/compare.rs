@@ -33,12 +33,19 @@ pub fn signed_difference(learner: &RgbImage, reference: &RgbImage) -> RgbImage {
         } else {
             (40.0 + 215.0 * strength) as u8
         };
-        if signed >= 0.0 && a != b {
-            Rgb([level, level / 5, 0])
-        } else {
-            Rgb([0, level / 3, level])
-        }
+        signed_colour(level, signed >= 0.0 && a != b)
     })
+}
+
+/// The difference maps' two colours: red (a touch of green) where the
+/// learner's picture is brighter, blue (a touch of green) where darker,
+/// at `level`.
+pub fn signed_colour(level: u8, brighter: bool) -> Rgb<u8> {
+    if brighter {
+        Rgb([level, level / 5, 0])
+    } else {
+        Rgb([0, level / 3, level])
+    }
 }
 
 #[cfg(test)]

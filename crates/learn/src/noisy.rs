@@ -11,10 +11,12 @@ use std::sync::{Arc, Mutex};
 
 use ch06_path_tracing::agreement::{Agreement, FAR, WorstZ, z_test};
 use ch06_path_tracing::exr::load_exr;
-use image::{Rgb, RgbImage};
+use image::RgbImage;
 use raylab::linear_image::LinearImage;
 use raylab::{Camera, NoProgress, Scene};
 
+use crate::check::save_images;
+use crate::compare::signed_colour;
 use crate::run::shown;
 
 /// The most pixel channels that may lie more than [`FAR`] standard errors
@@ -153,14 +155,7 @@ pub fn judge(
         ("reference.png", reference.image.to_srgb8()),
         ("z-map.png", z_map(&agreement, learner.image.width())),
     ];
-    let mut saved = true;
-    for (name, image) in &images {
-        if let Err(e) = raylab_cli::output::save_png(image, &dir.join(name)) {
-            let _ = writeln!(out, "      could not write {name}: {e}");
-            saved = false;
-        }
-    }
-    if saved {
+    if save_images(&images, dir, out) {
         let _ = writeln!(
             out,
             "      look at {}/learner.png, reference.png and z-map.png (red: yours brighter, \
@@ -182,11 +177,7 @@ pub fn z_map(agreement: &Agreement, width: u32) -> RgbImage {
             .into_iter()
             .fold(0.0f64, |m, v| if v.abs() > m.abs() { v } else { m });
         let level = (255.0 * (furthest.abs() / (2.0 * FAR)).min(1.0)) as u8;
-        if furthest >= 0.0 {
-            Rgb([level, level / 5, 0])
-        } else {
-            Rgb([0, level / 3, level])
-        }
+        signed_colour(level, furthest >= 0.0)
     })
 }
 
