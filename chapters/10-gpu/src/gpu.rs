@@ -104,6 +104,23 @@ fn storage(binding: u32, read_only: bool) -> wgpu::BindGroupLayoutEntry {
 }
 
 impl Gpu {
+    /// The GPU for a test that needs one: where there is none it says so
+    /// and gives `None` (the test then checks nothing), unless `CI` is
+    /// set, where a missing adapter is a failure (CI installs lavapipe).
+    /// Shared by the tests of every crate that renders on the GPU.
+    pub fn for_tests() -> Option<Gpu> {
+        match Gpu::new() {
+            Ok(gpu) => Some(gpu),
+            Err(error) if std::env::var_os("CI").is_none() => {
+                eprintln!(
+                    "this test needs a GPU adapter and found none, so it checked nothing: {error}"
+                );
+                None
+            }
+            Err(error) => panic!("this test needs a GPU adapter (CI installs lavapipe): {error}"),
+        }
+    }
+
     /// The default adapter (lavapipe on a machine without a GPU).
     pub fn new() -> Result<Gpu, GpuError> {
         if std::env::var_os(NO_ADAPTER_VAR).is_some() {

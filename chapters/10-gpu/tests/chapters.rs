@@ -15,20 +15,6 @@ use raylab::NoProgress;
 use raylab::tolerance::compare;
 use raylab::{Camera, Keep, Sampling, Scene, Settings, Step};
 
-/// The GPU, or `None` (with a note) where there is none and CI is not set.
-fn gpu() -> Option<Gpu> {
-    match Gpu::new() {
-        Ok(gpu) => Some(gpu),
-        Err(error) if std::env::var_os("CI").is_none() => {
-            eprintln!(
-                "this test needs a GPU adapter and found none, so it checked nothing: {error}"
-            );
-            None
-        }
-        Err(error) => panic!("this test needs a GPU adapter (CI installs lavapipe): {error}"),
-    }
-}
-
 /// A chapter's settings at 320 × 240, with its default depth and samples.
 fn settings(like: Like) -> Settings {
     let (max_depth, spp, _) = like.defaults();
@@ -100,7 +86,7 @@ fn check(gpu: &Gpu, like: Like, scene: &(Scene, Camera), what: &str, (width, hei
 
 #[test]
 fn like_chapters_1_to_5_the_shader_matches_each_chapter_within_lab_tolerance() {
-    let Some(gpu) = gpu() else { return };
+    let Some(gpu) = Gpu::for_tests() else { return };
     let lab = (Scene::lab(), Camera::lab());
     for like in Like::ALL {
         check(&gpu, like, &lab, "lab scene", (320, 240));
@@ -121,7 +107,7 @@ fn scenes() -> Vec<PathBuf> {
 
 #[test]
 fn every_scene_file_renders_on_the_gpu_as_chapter_5_renders_it() {
-    let Some(gpu) = gpu() else { return };
+    let Some(gpu) = Gpu::for_tests() else { return };
     for path in scenes() {
         let name = path.file_name().unwrap().to_string_lossy().into_owned();
         let scene = raylab_cli::scene_file::load(&path).unwrap();
@@ -144,7 +130,7 @@ fn the_gpu_counts_the_rays_chapter_4_traces() {
     // Counting is arithmetic on whole numbers, but which ray goes where
     // rests on floats: a grazing ray may split differently. Within a
     // thousandth, by kind.
-    let Some(gpu) = gpu() else { return };
+    let Some(gpu) = Gpu::for_tests() else { return };
     let lab = (Scene::lab(), Camera::lab());
     let settings = settings(Like::Refraction);
     let tracer = gpu
@@ -180,7 +166,7 @@ fn with_epsilon_0_the_ray_budget_cuts_short_as_many_samples_as_chapter_4() {
     // budget of 4096 rays per sample is what stops them, on the GPU too.
     // Which rays re-hit their surface rests on rounding, so the counts
     // agree closely, not exactly.
-    let Some(gpu) = gpu() else { return };
+    let Some(gpu) = Gpu::for_tests() else { return };
     let lab = (Scene::lab(), Camera::lab());
     let settings = Settings {
         width: 160,
@@ -211,7 +197,7 @@ fn with_epsilon_0_the_ray_budget_cuts_short_as_many_samples_as_chapter_4() {
 #[test]
 fn an_image_too_big_for_one_buffer_renders_in_bands_to_the_same_pixels() {
     // Bands of 7 rows (the last one shorter) against the whole image at once.
-    let Some(gpu) = gpu() else { return };
+    let Some(gpu) = Gpu::for_tests() else { return };
     let settings = Settings {
         width: 64,
         height: 48,

@@ -19,21 +19,6 @@ fn key(explorer: &mut Explorer, c: char) {
     explorer.handle(Input::Key(Key::Char(c)));
 }
 
-/// Whether a GPU adapter exists; without one (and without `CI`) the
-/// reason is printed and the caller checks nothing.
-fn adapter_exists() -> bool {
-    match ch10_gpu::gpu::Gpu::new() {
-        Ok(_) => true,
-        Err(error) if std::env::var_os("CI").is_none() => {
-            eprintln!(
-                "this test needs a GPU adapter and found none, so it checked nothing: {error}"
-            );
-            false
-        }
-        Err(error) => panic!("this test needs a GPU adapter (CI installs lavapipe): {error}"),
-    }
-}
-
 fn right_half(image: &RgbImage) -> RgbImage {
     let half = image.width() / 2;
     image
@@ -56,7 +41,7 @@ fn overlay_lines(explorer: &Explorer) -> Vec<String> {
 
 #[test]
 fn pressing_g_shows_the_gpu_render_beside_the_cpu_one_within_lab_tolerance() {
-    if !adapter_exists() {
+    if ch10_gpu::gpu::Gpu::for_tests().is_none() {
         return;
     }
     let mut explorer = Explorer::new(Loaded::lab(), W, H);
@@ -188,7 +173,7 @@ fn with_no_gpu_adapter_g_says_so_in_one_line_and_the_explorer_goes_on() {
 
 #[test]
 fn while_the_camera_moves_the_gpu_half_waits_for_the_view_to_be_still() {
-    if !adapter_exists() {
+    if ch10_gpu::gpu::Gpu::for_tests().is_none() {
         return;
     }
     let mut explorer = Explorer::new(Loaded::lab(), W, H);

@@ -17,21 +17,6 @@ use learn::check::{Limits, Verdict};
 use learn::lab::Lab;
 use learn::shader_check::check_shader;
 
-/// Whether there is an adapter to render with; a note where there is
-/// none, and a failure there under CI.
-fn has_adapter() -> bool {
-    match ch10_gpu::gpu::Gpu::new() {
-        Ok(_) => true,
-        Err(error) if std::env::var_os("CI").is_none() => {
-            eprintln!(
-                "this test needs a GPU adapter and found none, so it checked nothing: {error}"
-            );
-            false
-        }
-        Err(error) => panic!("this test needs a GPU adapter (CI installs lavapipe): {error}"),
-    }
-}
-
 /// A lab in a fresh temporary folder, building into the shared target.
 fn temp_lab() -> (tempfile::TempDir, Lab) {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -70,7 +55,7 @@ fn solution_with(lab: &Lab, from: &str, to: &str) {
 
 #[test]
 fn the_shader_as_handed_out_compiles_and_has_no_shadows() {
-    if !has_adapter() {
+    if ch10_gpu::gpu::Gpu::for_tests().is_none() {
         return;
     }
     let (_dir, lab) = temp_lab();
@@ -94,7 +79,7 @@ fn the_shader_as_handed_out_compiles_and_has_no_shadows() {
 
 #[test]
 fn the_reference_shader_pasted_back_passes_every_picture() {
-    if !has_adapter() {
+    if ch10_gpu::gpu::Gpu::for_tests().is_none() {
         return;
     }
     let (_dir, lab) = temp_lab();
@@ -144,7 +129,7 @@ const WRONG: [Wrong; 4] = [
 
 #[test]
 fn a_known_wrong_answer_to_each_task_is_caught_by_the_picture_that_judges_it() {
-    if !has_adapter() {
+    if ch10_gpu::gpu::Gpu::for_tests().is_none() {
         return;
     }
     for wrong in &WRONG {
