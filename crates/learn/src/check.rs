@@ -250,6 +250,7 @@ fn check_core_steps(
         &lab.target,
         &["-p", "raylab", "--lib", "--tests"],
         &shown_as,
+        true,
         out,
     ) {
         Ok(built) => built,
@@ -267,6 +268,7 @@ fn check_core_steps(
         &lab.target,
         &["-p", package, "--bin", &program],
         &shown_as,
+        true,
         out,
     ) {
         Ok(built) => built,
@@ -317,6 +319,7 @@ fn build(lab: &Lab, exercise: &Exercise, out: &mut dyn Write) -> Result<Built, V
         &lab.target,
         &["--all-targets"],
         &[],
+        true,
         out,
     )
 }
@@ -331,12 +334,14 @@ fn first_build_note(out: &mut dyn Write) {
 
 /// `cargo build` of the workspace at `manifest` into `target`, with the
 /// compiler's messages shown as they are, each `(from, to)` of `shown_as`
-/// replaced (the learner's files are compiled from a copy).
+/// replaced (the learner's files are compiled from a copy); `incremental`
+/// for a lab the learner edits between builds.
 pub(crate) fn cargo_build(
     manifest: &Path,
     target: &Path,
     args: &[&str],
     shown_as: &[(String, String)],
+    incremental: bool,
     out: &mut dyn Write,
 ) -> Result<Built, Verdict> {
     let mut command = cargo();
@@ -350,6 +355,14 @@ pub(crate) fn cargo_build(
         .arg("--target-dir")
         .arg(target)
         .env("CARGO_TERM_COLOR", "never");
+    if incremental {
+        // A check rebuilds the learner's crate after a small edit, which is
+        // what incremental compilation is for: a second instead of the
+        // whole crate's compile. It is cargo's default for these builds;
+        // say so, for environments that turn it off for one-shot builds
+        // (CI does).
+        command.env("CARGO_INCREMENTAL", "1");
+    }
     let output = run_with_limit(command, BUILD_TIME_LIMIT)
         .map_err(|e| Verdict::Broken(format!("cannot run cargo: {e}")))?;
     if output.timed_out() {

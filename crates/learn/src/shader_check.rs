@@ -93,8 +93,13 @@ fn check_steps(lab: &Lab, limits: Limits, out: &mut dyn Write) -> Verdict {
 }
 
 /// The workspace's `ch10-gpu`, built into the lab's target folder: the
-/// first check links it (if `cargo test` or the main job has not), later
-/// ones find it up to date.
+/// first check links it, later ones find it up to date.
+///
+/// It is chosen by `--bin` alone, not `-p`: cargo then turns on the
+/// libraries' features as a build of the whole workspace does, so the
+/// libraries `cargo build` or `cargo test` compiled are used as they are.
+/// `-p ch10-gpu` would choose features for ch10-gpu's tree alone, and
+/// compile the GPU stack again.
 fn build_program(lab: &Lab, out: &mut dyn Write) -> Result<std::path::PathBuf, Verdict> {
     let binary = format!("{PACKAGE}{}", std::env::consts::EXE_SUFFIX);
     if !lab.target.join("debug").join(&binary).exists() {
@@ -108,8 +113,9 @@ fn build_program(lab: &Lab, out: &mut dyn Write) -> Result<std::path::PathBuf, V
     let built = cargo_build(
         &lab.root.join("Cargo.toml"),
         &lab.target,
-        &["-p", PACKAGE, "--bin", PACKAGE],
+        &["--bin", PACKAGE],
         &[],
+        false,
         out,
     )
     .map_err(|verdict| match verdict {
