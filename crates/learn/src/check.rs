@@ -250,7 +250,7 @@ fn check_core_steps(
         &lab.target,
         &["-p", "raylab", "--lib", "--tests"],
         &shown_as,
-        true,
+        Builds::Lab,
         out,
     ) {
         Ok(built) => built,
@@ -268,7 +268,7 @@ fn check_core_steps(
         &lab.target,
         &["-p", package, "--bin", &program],
         &shown_as,
-        true,
+        Builds::Lab,
         out,
     ) {
         Ok(built) => built,
@@ -319,7 +319,7 @@ fn build(lab: &Lab, exercise: &Exercise, out: &mut dyn Write) -> Result<Built, V
         &lab.target,
         &["--all-targets"],
         &[],
-        true,
+        Builds::Lab,
         out,
     )
 }
@@ -332,16 +332,24 @@ fn first_build_note(out: &mut dyn Write) {
     let _ = out.flush();
 }
 
+/// What a [`cargo_build`] compiles, which decides how.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Builds {
+    /// The learner's lab, built again after every small edit: incrementally.
+    Lab,
+    /// The workspace's own program, built as the workspace's build chose.
+    Workspace,
+}
+
 /// `cargo build` of the workspace at `manifest` into `target`, with the
 /// compiler's messages shown as they are, each `(from, to)` of `shown_as`
-/// replaced (the learner's files are compiled from a copy); `incremental`
-/// for a lab the learner edits between builds.
+/// replaced (the learner's files are compiled from a copy).
 pub(crate) fn cargo_build(
     manifest: &Path,
     target: &Path,
     args: &[&str],
     shown_as: &[(String, String)],
-    incremental: bool,
+    builds: Builds,
     out: &mut dyn Write,
 ) -> Result<Built, Verdict> {
     let mut command = cargo();
@@ -355,7 +363,7 @@ pub(crate) fn cargo_build(
         .arg("--target-dir")
         .arg(target)
         .env("CARGO_TERM_COLOR", "never");
-    if incremental {
+    if builds == Builds::Lab {
         // A check rebuilds the learner's crate after a small edit, which is
         // what incremental compilation is for: a second instead of the
         // whole crate's compile. It is cargo's default for these builds;

@@ -20,7 +20,7 @@ use std::path::Path;
 
 use ch10_gpu::shader::Source;
 
-use crate::check::{Limits, Picture, Verdict, cargo_build, render_and_compare, size_flags};
+use crate::check::{Builds, Limits, Picture, Verdict, cargo_build, render_and_compare, size_flags};
 use crate::lab::Lab;
 use crate::run::shown;
 use crate::shader::{CHAPTER, NAME, PACKAGE, PAGE, STAGES, Stage};
@@ -96,10 +96,11 @@ fn check_steps(lab: &Lab, limits: Limits, out: &mut dyn Write) -> Verdict {
 /// first check links it, later ones find it up to date.
 ///
 /// It is chosen by `--bin` alone, not `-p`: cargo then turns on the
-/// libraries' features as a build of the whole workspace does, so the
-/// libraries `cargo build` or `cargo test` compiled are used as they are.
-/// `-p ch10-gpu` would choose features for ch10-gpu's tree alone, and
-/// compile the GPU stack again.
+/// libraries' features as a build of the whole workspace does, and uses
+/// what `cargo build` or `cargo test` compiled (after `cargo test`, only
+/// `tempfile`, whose features the tests' own dependencies change, and the
+/// few crates above it are compiled again). `-p ch10-gpu` would choose
+/// features for ch10-gpu's tree alone, and compile the GPU stack again.
 fn build_program(lab: &Lab, out: &mut dyn Write) -> Result<std::path::PathBuf, Verdict> {
     let binary = format!("{PACKAGE}{}", std::env::consts::EXE_SUFFIX);
     if !lab.target.join("debug").join(&binary).exists() {
@@ -115,7 +116,7 @@ fn build_program(lab: &Lab, out: &mut dyn Write) -> Result<std::path::PathBuf, V
         &lab.target,
         &["--bin", PACKAGE],
         &[],
-        false,
+        Builds::Workspace,
         out,
     )
     .map_err(|verdict| match verdict {
