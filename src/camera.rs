@@ -56,7 +56,7 @@ impl Camera {
         })
     }
 
-    /// The lab's camera (LAB.md).
+    /// The lab's camera (the lab model).
     pub fn lab() -> Self {
         Camera::look_at(
             Vec3::new(0.0, 1.2, 4.5),

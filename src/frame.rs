@@ -30,7 +30,7 @@ pub struct Settings {
 #[derive(Clone, Debug)]
 pub struct Rendered {
     pub settings: Settings,
-    /// The image as `render.png` stores it: LAB.md's 8-bit sRGB, encoded
+    /// The image as `render.png` stores it: the lab model's 8-bit sRGB, encoded
     /// by the workers as they finish each row.
     pub srgb: RgbImage,
     /// The image in linear light, when the render was asked to keep it.

@@ -33,7 +33,7 @@
 //!
 //! Nothing here draws a figure, reads a file or parses a command line: the
 //! program around a step is `raylab-cli`'s, and its figures are drawn with
-//! `raylab-plot`. The lab model (LAB.md, carried by the book's appendix)
+//! `raylab-plot`. The lab model (the book's appendix)
 //! defines every formula used here.
 
 pub mod camera;

@@ -59,7 +59,7 @@ impl LinearImage {
         self.pixels.iter().all(|p| p.is_finite())
     }
 
-    /// Encode for display: clamp, sRGB, round to 8 bits (LAB.md), with
+    /// Encode for display: clamp, sRGB, round to 8 bits (the lab model), with
     /// [`EncodeTable`] (the same bytes as `encode_channel`, without a
     /// `powf` per channel), rows shared out over every core.
     pub fn to_srgb8(&self) -> RgbImage {

@@ -7,7 +7,7 @@ use crate::Vec3;
 /// `reflection` and `transmission` are the shares of the light that leave
 /// along the mirror and the refracted direction; the rest, `1 − r − t`, is
 /// shaded locally with `albedo`. Build one with [`Material::new`], which
-/// checks the rules of LAB.md, so that a `Material` in hand is always valid.
+/// checks the rules of the lab model, so that a `Material` in hand is always valid.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Material {
     albedo: Vec3,

@@ -4,7 +4,7 @@ use crate::Vec3;
 
 /// A half-line `origin + t · direction`, `t > 0`.
 ///
-/// The direction is always of unit length (LAB.md): `t` is then a distance,
+/// The direction is always of unit length (the lab model): `t` is then a distance,
 /// and the intersection formulas can skip the `dot(d, d)` term.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ray {

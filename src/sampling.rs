@@ -1,4 +1,4 @@
-//! Where inside a pixel its rays go (LAB.md "Anti-aliasing" and "More rays
+//! Where inside a pixel its rays go (the lab model, "Anti-aliasing" and "More rays
 //! per pixel").
 //!
 //! A pixel's colour is the plain average of its samples' colours. The
@@ -98,9 +98,9 @@ impl fmt::Display for Pattern {
 /// Where a render's sample points come from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Layout {
-    /// One ray through the centre of the pixel (LAB.md, `--spp 1`).
+    /// One ray through the centre of the pixel (the lab model, `--spp 1`).
     PixelCentre,
-    /// [`LAB_FIVE`] (LAB.md, `--spp 5`).
+    /// [`LAB_FIVE`] (the lab model, `--spp 5`).
     LabFive,
     /// Any count, any pattern ("More rays per pixel").
     Pattern(Pattern),
@@ -139,7 +139,7 @@ pub struct Sampling {
 }
 
 impl Sampling {
-    /// One ray through each pixel's centre, as LAB.md's chapters 1-4.
+    /// One ray through each pixel's centre, as the lab model's chapters 1-4.
     pub const PIXEL_CENTRE: Sampling = Sampling {
         spp: 1,
         layout: Layout::PixelCentre,
@@ -148,7 +148,7 @@ impl Sampling {
         five: LAB_FIVE,
     };
 
-    /// The lab's five rays, as LAB.md's chapter 5.
+    /// The lab's five rays, as the lab model's chapter 5.
     pub const LAB_FIVE: Sampling = Sampling {
         spp: 5,
         layout: Layout::LabFive,

@@ -117,7 +117,7 @@ impl Scene {
         Ok(())
     }
 
-    /// The lab scene of LAB.md: a checkered ground, five spheres, sky and sun.
+    /// The lab scene of the lab model: a checkered ground, five spheres, sky and sun.
     pub fn lab() -> Self {
         let mut scene = Scene::new(
             Ground {

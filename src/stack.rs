@@ -19,7 +19,7 @@ pub const MAX_SECONDARIES: usize = 4;
 /// never holds more than one ray plus the waiting siblings of every level.
 pub const STACK_CAPACITY: usize = MAX_DEPTH_LIMIT as usize * (MAX_SECONDARIES - 1) + 1;
 
-/// A ray waiting on the stack, with what the ray stack of LAB.md carries.
+/// A ray waiting on the stack, with what the ray stack of the lab model carries.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PendingRay {
     pub ray: Ray,

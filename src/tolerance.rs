@@ -1,4 +1,4 @@
-//! LAB.md's tolerance: how closely two 8-bit images must agree for two
+//! The lab model's tolerance: how closely two 8-bit images must agree for two
 //! correct implementations of the lab.
 //!
 //! Float sums in another order, a fused multiply-add or a `powf` one ulp
@@ -54,7 +54,7 @@ impl WorstPixel {
 }
 
 impl Agreement {
-    /// LAB.md's bar for two correct implementations.
+    /// The lab model's bar for two correct implementations.
     pub fn meets_lab_tolerance(&self) -> bool {
         self.within_3 >= SHARE_WITHIN && self.mean < MEAN_BELOW
     }

@@ -1,4 +1,4 @@
-//! The tracer: the ray-stack loop of LAB.md, and the seam where a chapter
+//! The tracer: the ray-stack loop of the lab model, and the seam where a chapter
 //! plugs in what happens when a ray hits something.
 
 use crate::Vec3;
@@ -121,7 +121,7 @@ impl<'s> Surface<'s> {
         );
         self.sent[self.sent_len] = Secondary { kind, ray, share };
         self.sent_len += 1;
-        // Subtracted one share at a time, as LAB.md writes `1 - r - t`.
+        // Subtracted one share at a time, as the lab model writes `1 - r - t`.
         self.kept -= share;
     }
 
@@ -308,10 +308,10 @@ impl<'s, S: Step + ?Sized, Q: SceneQuery> Tracer<'s, S, Q> {
     }
 
     // ANCHOR: trace
-    /// The colour seen along a primary ray: LAB.md's ray-stack loop.
+    /// The colour seen along a primary ray: the lab model's ray-stack loop.
     pub fn trace(&mut self, primary: Ray) -> Traced {
         let mut traced = self.start();
-        // ANCHOR: todo_trace "The ray-stack loop of LAB.md: push the primary ray (weight 1, depth 1); pop until empty, counting each ray (self.count) and, after shading, its feelers (self.count_shadow_rays); a ray that hits nothing adds weight · sky; one that hits adds weight · kept · local and, below max_depth and within RAY_BUDGET, pushes each ray sent on with weight × share and depth + 1."
+        // ANCHOR: todo_trace "The ray-stack loop of the lab model: push the primary ray (weight 1, depth 1); pop until empty, counting each ray (self.count) and, after shading, its feelers (self.count_shadow_rays); a ray that hits nothing adds weight · sky; one that hits adds weight · kept · local and, below max_depth and within RAY_BUDGET, pushes each ray sent on with weight × share and depth + 1."
         self.stack.push(PendingRay {
             ray: primary,
             kind: RayKind::Primary,
@@ -612,7 +612,7 @@ mod tests {
 
     #[test]
     fn the_ray_sent_last_is_traced_first() {
-        // A reflection then a refraction sent from the first hit: LAB.md
+        // A reflection then a refraction sent from the first hit: the lab model
         // pushes them in that order, so the refraction is popped first.
         struct ReflectThenRefract;
         impl Step for ReflectThenRefract {

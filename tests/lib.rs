@@ -1,11 +1,11 @@
 //! Helpers for the tests of the whole workbook: comparing images the way
-//! LAB.md's tolerance says, and the golden images kept in `tests/golden/`.
+//! the lab model's tolerance says, and the golden images kept in `tests/golden/`.
 
 use std::path::PathBuf;
 
 use image::RgbImage;
 
-/// LAB.md's tolerance, kept once in the core: the learner's `check` judges
+/// The lab model's tolerance, kept once in the core: the learner's `check` judges
 /// with the same copy.
 pub use raylab::tolerance::{Agreement, compare};
 

@@ -49,7 +49,7 @@ impl Step for RayCast {
 }
 // ANCHOR_END: step
 
-/// Chapter 1's program: LAB.md's table gives depth 1, one ray per pixel.
+/// Chapter 1's program: the lab model's table gives depth 1, one ray per pixel.
 pub const CHAPTER: Chapter<RayCast> = Chapter {
     binary: "ch01-ray-cast",
     about: "Chapter 1, ray casting: one ray per pixel, shaded by the sun and the sky.",

@@ -36,7 +36,7 @@ impl Materials {
 }
 
 /// A pixel's light, split by where it came from and how many diffuse
-/// scatterings `k` it took (LAB.md "Contributions by term").
+/// scatterings `k` it took (the lab model, "Contributions by term").
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Terms {
     /// `k = 0`: the sky or the sun's disc, seen directly or through mirrors and glass.

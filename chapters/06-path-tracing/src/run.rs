@@ -95,7 +95,7 @@ pub fn parse(
 /// The render settings the flags ask for, once checked together.
 pub fn settings(options: &CommonFlags, flags: &Flags) -> Result<PathSettings, CliError> {
     cli::check_pixel_count(options.width, options.height)?;
-    // A path tracer's pixel is the average over its whole area (LAB.md),
+    // A path tracer's pixel is the average over its whole area (the lab model),
     // so its samples are spread at random, even for one path per pixel;
     // by default independently, so that the variance estimated from them
     // is exactly the variance of the mean.

@@ -1,6 +1,6 @@
 //! The sun as chapter 6 sees it: a point in the sky (a delta light) or,
 //! with `--sun-size D`, a disc of directions `D` degrees across, of uniform
-//! radiance, giving the same irradiance `E_sun = 0.1 · E` (LAB.md).
+//! radiance, giving the same irradiance `E_sun = 0.1 · E` (the lab model).
 
 use std::f32::consts::PI;
 

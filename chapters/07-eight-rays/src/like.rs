@@ -20,7 +20,7 @@ pub enum Like {
     AntiAliasing,
 }
 
-/// What a chapter has switched on (LAB.md's chapter table).
+/// What a chapter has switched on (the lab model's chapter table).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Features {
     pub shadows: bool,

@@ -18,12 +18,12 @@
 //!
 //! # Where it differs from the CPU chapters
 //!
-//! The formulas are LAB.md's, in the same order, but the arithmetic is
+//! The formulas are the lab model's, in the same order, but the arithmetic is
 //! the GPU's: WGSL's `normalize`, `reflect`, `refract` and `sqrt` are the
 //! driver's, which may compute `1/√x` another way or fuse a multiply and
 //! an add, so a few values differ in their last bit. Where that moves a
 //! grazing ray onto another checker square or the other side of an edge,
-//! a pixel changes; LAB.md's tolerance (99.5 % of pixels within 3 levels,
+//! a pixel changes; the lab model's tolerance (99.5 % of pixels within 3 levels,
 //! mean difference under 0.5) is the bar, and the tests hold the shader
 //! to it against chapters 1–5. Smaller differences: the shader counts
 //! rays in 32-bit numbers per image row; `--pattern` jittered, random and

@@ -1,6 +1,6 @@
 // Chapter 10: the lab's tracer as a WGSL compute shader.
 //
-// One invocation per pixel: each one traces its pixel's rays with LAB.md's
+// One invocation per pixel: each one traces its pixel's rays with the lab model's
 // camera, shapes, shading and ray stack, exactly as chapters 1-5 do in
 // Rust, and writes the pixel's colour in linear light. The program
 // (`ch10-gpu`) builds the inputs from the core's `raylab::Scene`, reads
@@ -250,7 +250,7 @@ fn local_light(hit: Hit, k: f32) -> vec3<f32> {
 // ANCHOR_END: local_light
 
 // ANCHOR: stack
-// A ray waiting on the stack: LAB.md's origin, direction, weight and depth
+// A ray waiting on the stack: the lab model's origin, direction, weight and depth
 // (and its kind, for the counts).
 struct Pending {
     origin: vec3<f32>,
@@ -303,7 +303,7 @@ struct Progress {
 // ANCHOR_END: stack
 
 // ANCHOR: trace
-// A pixel's samples, one after the other, each traced by LAB.md's ray-stack
+// A pixel's samples, one after the other, each traced by the lab model's ray-stack
 // loop (one ray per turn: pop it, trace it, push the rays it sends on) with
 // the features of the chapter chosen by `params.features`. It stops when
 // the pixel is done, or once this dispatch's `params.steps` rays are

@@ -1,4 +1,4 @@
-//! The shader against chapters 1–5: the same images, within LAB.md's
+//! The shader against chapters 1–5: the same images, within the lab model's
 //! tolerance, on the lab scene and on every scene in `scenes/`.
 //!
 //! These tests need a GPU adapter: any Vulkan one will do, and Mesa's

@@ -1,9 +1,9 @@
-// The lab scene of /work/shared/LAB.md in GLSL: camera, ground, five
+// The lab scene of the lab model (the book's appendix) in GLSL: camera, ground, five
 // spheres, sky and sun, and the two hit queries. Shared by whitted.frag and
 // path.frag, which include it by name; GLSL has no include of its own, so
 // moderngl pastes it in (run.py registers it in `ctx.includes`).
 //
-// Everything is 32-bit float, as in LAB.md and in the Rust. The order of
+// Everything is 32-bit float, as in the lab model and in the Rust. The order of
 // the arithmetic follows src/ (sphere.rs, plane.rs, scene.rs, camera.rs), so
 // that the two differ only where the JIT fuses a multiply and an add.
 
@@ -14,7 +14,7 @@ uniform vec2 resolution; // the image's width and height in pixels
 const vec3 EYE = vec3(0.0, 1.2, 4.5);
 const vec3 TARGET = vec3(0.0, 0.6, 0.0);
 const vec3 UP = vec3(0.0, 1.0, 0.0);
-// tan(22.5°) rounded to f32, as LAB.md gives it: no tan() in the shader,
+// tan(22.5°) rounded to f32, as the lab model gives it: no tan() in the shader,
 // whose precision GLSL leaves to the implementation.
 const float HALF_HEIGHT = 0.41421357;
 
@@ -46,7 +46,7 @@ struct Material {
 };
 
 const int SPHERES = 5;
-// Centre (xyz) and radius (w), in LAB.md's table order: mirror, glass, red,
+// Centre (xyz) and radius (w), in the lab model's table order: mirror, glass, red,
 // blue, yellow. The order matters: on a tie the earlier object wins.
 const vec4 SPHERE[SPHERES] = vec4[](
     vec4(-1.25, 0.5, 0.5, 0.5),
@@ -164,7 +164,7 @@ bool any_hit(Ray ray) {
     return false;
 }
 
-// The mirror direction, as LAB.md writes it (GLSL's own reflect() is the
+// The mirror direction, as the lab model writes it (GLSL's own reflect() is the
 // same formula; spelled out so that a reader sees it).
 vec3 mirror(vec3 d, vec3 n) {
     return d - 2.0 * dot(d, n) * n;

@@ -1,5 +1,5 @@
 #version 330 core
-// Chapter 6 as a fragment shader: LAB.md's "the same scene, physically"
+// Chapter 6 as a fragment shader: the lab model's "the same scene, physically"
 // with lab materials, a point sun and no caustics, `spp` random paths per
 // pixel. It follows chapters/06-path-tracing/src/integrator.rs step by step
 // (the same estimator, so the same expected image and the same variance)
@@ -10,7 +10,7 @@
 uniform int spp;       // paths per pixel
 uniform uint seed;     // varies the random numbers from one run to the next
 uniform int max_depth; // the most surface hits on a path (chapter 6: 10)
-// The sun's irradiance on a surface facing it: 0.1 · E (LAB.md).
+// The sun's irradiance on a surface facing it: 0.1 · E (the lab model).
 const float E_SUN = 2.5;
 const float FRAC_1_PI = 0.318309886;
 

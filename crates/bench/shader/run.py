@@ -131,7 +131,7 @@ def llvmpipe_threads():
 
 
 def to_srgb8(linear):
-    """LAB.md's encoding, for the path shader's linear radiance."""
+    """The lab model's encoding, for the path shader's linear radiance."""
     import numpy as np
 
     c = np.clip(np.nan_to_num(linear, nan=0.0), 0.0, 1.0).astype("f4")
@@ -190,7 +190,7 @@ def render(name, frames, spp, seed, out, whole=False, max_depth=10):
 
 
 def agreement(ours, reference):
-    """LAB.md's tolerance (src/tolerance.rs): the share of pixels within 3
+    """The lab model's tolerance (src/tolerance.rs): the share of pixels within 3
     of 255 in every channel, the mean absolute difference over every channel,
     and the largest difference."""
     import numpy as np
@@ -228,7 +228,7 @@ def check(spp, seed):
 
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        # Chapter 5: LAB.md's tolerance on the 8-bit images.
+        # Chapter 5: the lab model's tolerance on the 8-bit images.
         run_ours("ch05-antialiasing", ["--no-diagrams"], tmp / "ch05")
         ours = np.asarray(Image.open(tmp / "ch05" / "render.png").convert("RGB"))
         _, shaded, _ = render("whitted", 1, 5, seed, tmp / "shader", whole=True)
@@ -238,7 +238,7 @@ def check(spp, seed):
         print(
             f"whitted shader vs ch05-antialiasing: {within:.4%} of pixels within 3/255, "
             f"mean difference {mean:.4f}/255, largest {worst}, identical {identical:.4%}: "
-            f"{verdict} LAB.md's tolerance"
+            f"{verdict} the lab model's tolerance"
         )
         ch05_rays = re.search(r"([\d,]+) rays", run_ours("ch05-antialiasing", ["--no-diagrams"], tmp / "ch05b"))
         shader_rays = float(shaded[..., 3].astype("f8").sum())

@@ -1,7 +1,7 @@
 #version 330 core
 // Chapter 5 of the lab as the 2016 lab ran it: a fragment shader, one
 // fragment per pixel, each tracing its five rays through a fixed-size ray
-// stack (GLSL has no recursion and no heap). The model is LAB.md's, to the
+// stack (GLSL has no recursion and no heap). The model is the lab's, to the
 // formula; the Rust it is checked against is chapters/01..05 and src/.
 //
 // A GPU (or Mesa's llvmpipe, which compiles this for the CPU's 8-wide AVX
@@ -12,7 +12,7 @@
 
 #include "lab.glsl"
 
-// LAB.md's chapter 5: shadows, reflection and transmission on, depth 10.
+// The lab model's chapter 5: shadows, reflection and transmission on, depth 10.
 const int MAX_DEPTH = 10;
 // Each hit pushes at most two rays, and the reflected ray waits while the
 // transmitted subtree is traced, so at most one ray per level waits: the
@@ -25,7 +25,7 @@ const float SUN_IN_SHADOW = 0.01; // k when it hits anything
 const float AMBIENT = 0.04;
 const float PI = 3.14159265358979;
 
-// rgb: the pixel encoded as LAB.md says, as level / 255 (exact in an 8-bit
+// rgb: the pixel encoded as the lab model says, as level / 255 (exact in an 8-bit
 // target); a: how many rays the fragment traced, every kind counted, as
 // the Rust counts them (primary, reflected, refracted, shadow).
 layout(location = 0) out vec4 out_colour;
@@ -66,7 +66,7 @@ vec3 local_light(Hit hit) {
     return albedo / PI * irradiance + albedo * AMBIENT;
 }
 
-// One camera ray's colour: LAB.md's ray-stack loop.
+// One camera ray's colour: the lab model's ray-stack loop.
 vec3 trace(Ray primary) {
     vec3 colour = vec3(0.0);
     stack_len = 0;
@@ -86,7 +86,7 @@ vec3 trace(Ray primary) {
         float r = hit.material.reflection;
         float t = hit.material.transmission;
         // The share kept for local shading: 1 - r - t, subtracted one share
-        // at a time as LAB.md writes it (and as the Rust does).
+        // at a time as the lab model writes it (and as the Rust does).
         float kept = 1.0 - r - t;
         colour += w * kept * local_light(hit);
 
@@ -99,7 +99,7 @@ vec3 trace(Ray primary) {
                 vec3 T = refract(ray.direction, hit.facing_normal, eta_of(hit));
                 if (T == vec3(0.0)) {
                     // Total internal reflection: the lab pushed a zero
-                    // direction here; LAB.md sends the energy along R.
+                    // direction here; the lab model sends the energy along R.
                     push(hit.point + R * EPSILON, R, w * t, depth + 1);
                 } else {
                     T = normalize(T);
@@ -111,7 +111,7 @@ vec3 trace(Ray primary) {
     return colour;
 }
 
-// LAB.md's encoding of one linear channel: clamp, the sRGB curve, and the
+// The lab model's encoding of one linear channel: clamp, the sRGB curve, and the
 // nearest of 256 levels with halves rounded up (GLSL's round() may go
 // either way on a half; floor(v + 0.5) does not).
 float encode(float c) {

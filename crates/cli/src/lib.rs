@@ -46,7 +46,7 @@ pub struct Chapter<S: Step> {
     pub binary: &'static str,
     /// One line for `--help`.
     pub about: &'static str,
-    /// The default `--max-depth` (LAB.md's chapter table).
+    /// The default `--max-depth` (the lab model's chapter table).
     pub max_depth: u32,
     /// The default `--spp`.
     pub spp: u32,

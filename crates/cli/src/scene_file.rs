@@ -1,6 +1,6 @@
 //! Scene files: the lab scene, or your own, in TOML.
 //!
-//! `scenes/lab.toml` is the lab scene of LAB.md; `--scene FILE` renders any
+//! `scenes/lab.toml` is the lab scene of the lab model; `--scene FILE` renders any
 //! other. Every number is checked when the file is read, and a file that
 //! is not a valid scene gets one line that says where and why.
 

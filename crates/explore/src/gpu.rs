@@ -5,7 +5,7 @@
 //! renders (not the previews while the camera moves, nor the refinements
 //! on the way) is rendered a second time by that shader, with the same scene, camera,
 //! chapter, rays per pixel, depth and epsilon, and the two are compared
-//! with LAB.md's tolerance, the one the golden images are held to.
+//! with the lab model's tolerance, the one the golden images are held to.
 //!
 //! The device is made on the first frame that asks for it and kept: the
 //! explorer starts without looking for a GPU, and runs where there is

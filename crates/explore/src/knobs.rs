@@ -14,7 +14,7 @@ pub const SPP_STEPS: [u32; 6] = [1, 5, 16, 64, 256, 1024];
 /// the real sun, then ever larger discs whose shadows blur.
 pub const SUN_SIZES: [Option<f32>; 5] = [None, Some(0.53), Some(5.0), Some(20.0), Some(45.0)];
 
-/// The lab's offset for secondary and shadow rays (LAB.md).
+/// The lab's offset for secondary and shadow rays (the lab model).
 pub const LAB_EPSILON: f32 = 1e-4;
 
 /// Chapter 6's default count of paths per pixel.

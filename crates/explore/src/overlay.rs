@@ -76,7 +76,7 @@ pub fn status_lines(explorer: &Explorer) -> Vec<(String, Rgb)> {
 }
 
 /// With `g` on: the GPU frame's time beside the CPU's, and how the two
-/// images agree under LAB.md's tolerance; or why there is no GPU frame.
+/// images agree under the lab model's tolerance; or why there is no GPU frame.
 fn gpu_lines(explorer: &Explorer) -> Vec<(String, Rgb)> {
     let Some(outcome) = explorer.gpu().outcome() else {
         return Vec::new();
@@ -97,9 +97,9 @@ fn gpu_lines(explorer: &Explorer) -> Vec<(String, Rgb)> {
     );
     let agreement = &frame.agreement;
     let (verdict, colour) = if agreement.meets_lab_tolerance() {
-        ("LAB.md's tolerance met", TEXT)
+        ("the lab model's tolerance met", TEXT)
     } else {
-        ("outside LAB.md's tolerance", WARN)
+        ("outside the lab model's tolerance", WARN)
     };
     let compared = format!(
         "GPU against CPU: {:.2} % of pixels within {WITHIN_LEVELS} levels, largest difference {}: \

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use raylab::{Camera, Scene, Vec3};
 use raylab_cli::scene_file;
 
-/// The lab scene's file, exactly the lab (LAB.md).
+/// The lab scene's file, exactly the lab model's.
 pub const LAB_TOML: &str = include_str!("../../../scenes/lab.toml");
 
 /// A scene and the text it was read from.

@@ -60,7 +60,7 @@ fn pressing_g_shows_the_gpu_render_beside_the_cpu_one_within_lab_tolerance() {
         // The CPU's image on the left, the GPU's on the right...
         assert!(left_half(&shown) == left_half(&cpu), "chapter {n}");
         assert!(right_half(&shown) == right_half(&gpu.image), "chapter {n}");
-        // ... and the GPU's half is the CPU's within LAB.md's tolerance,
+        // ... and the GPU's half is the CPU's within the lab model's tolerance,
         // as is the whole GPU image.
         let half = compare(&right_half(&shown), &right_half(&cpu));
         println!(

@@ -93,7 +93,7 @@ impl Hits {
     }
 }
 
-/// Everything the shading needs about eight hits (LAB.md's hit record).
+/// Everything the shading needs about eight hits (the lab model's hit record).
 /// Lanes without a hit hold numbers too, which the caller's masks leave
 /// unread.
 #[derive(Clone, Copy, Debug)]

@@ -159,7 +159,7 @@ fn check_steps(
         if !exercise.judged_statistically() {
             let _ = writeln!(
                 out,
-                "  ✓ its render ({WIDTH}×{HEIGHT}) matches the reference within LAB.md's tolerance"
+                "  ✓ its render ({WIDTH}×{HEIGHT}) matches the reference within the lab model's tolerance"
             );
         }
         let _ = writeln!(
@@ -287,7 +287,7 @@ fn check_core_steps(
     if verdict.passed() {
         let _ = writeln!(
             out,
-            "  ✓ chapter {}'s render ({WIDTH}×{HEIGHT}) with your core matches the reference within LAB.md's tolerance\n\
+            "  ✓ chapter {}'s render ({WIDTH}×{HEIGHT}) with your core matches the reference within the lab model's tolerance\n\
              Done: `{}` passes. The reference is in src/ ({}), and the book's {}.",
             exercise.chapter,
             exercise.name,

@@ -1,9 +1,9 @@
-//! The learner's render against the reference, as LAB.md's tolerance
+//! The learner's render against the reference, as the lab model's tolerance
 //! judges two implementations, and as OpenImageIO's `idiff` reports it.
 
 use image::{Rgb, RgbImage};
 
-/// The comparison and the bar: LAB.md's tolerance as the core keeps it,
+/// The comparison and the bar: the lab model's tolerance as the core keeps it,
 /// the same copy the golden-image tests use. `compare(learner, reference)`
 /// also names the pixel that differs most, with both its values.
 pub use raylab::tolerance::{Agreement as Comparison, WorstPixel, compare};

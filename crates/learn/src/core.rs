@@ -103,7 +103,7 @@ pub const CORE_EXERCISES: [CoreExercise; 9] = [
         hint: "Three small functions. `linear_to_srgb`: 12.92 · c up to 0.0031308, else 1.055 · \
                c^(1/2.4) − 0.055 (`powf`). `encode_channel`: a NaN becomes 0, then clamp to \
                [0, 1], encode, quantise. `quantise`: (255 · v).round() as u8; `f32::round` \
-               rounds halves away from zero, as LAB.md asks (`round_ties_even` would not).",
+               rounds halves away from zero, as the lab model asks (`round_ties_even` would not).",
     },
     CoreExercise {
         name: "reflect",

@@ -11,7 +11,7 @@
 //! The reference is each chapter's own render on the CPU, the images the
 //! chapters' checks compare with: the shader is meant to be the chapters'
 //! tracer, and chapter 10's tests hold the reference shader to those very
-//! images within LAB.md's tolerance, which covers the GPU's arithmetic.
+//! images within the lab model's tolerance, which covers the GPU's arithmetic.
 //! Rendering the reference shader instead would need the GPU twice and
 //! would only ever judge the learner against a copy of the same code.
 
@@ -71,7 +71,7 @@ fn check_steps(lab: &Lab, limits: Limits, out: &mut dyn Write) -> Verdict {
         }
         let _ = writeln!(
             out,
-            "  ✓ {}, the render ({}×{}) matches chapter {}'s within LAB.md's tolerance: {} is \
+            "  ✓ {}, the render ({}×{}) matches chapter {}'s within the lab model's tolerance: {} is \
              right",
             stage.label(),
             crate::check::WIDTH,

@@ -127,7 +127,7 @@ pub struct GroundMasks {
 
 /// Which pixels see the ground first, and of those which are in the sun's
 /// shadow: a shadow ray from the hit towards the sun, started `epsilon`
-/// along it, as LAB.md's shading does.
+/// along it, as the lab model's shading does.
 pub fn ground_masks(hits: &[Option<Hit>], scene: &Scene, epsilon: f32) -> GroundMasks {
     let to_sun = scene.sun.direction;
     let mut masks = GroundMasks {
@@ -210,7 +210,7 @@ pub fn mean_over_albedo(image: &LinearImage, albedo: &[Vec3], mask: &[bool]) -> 
 /// How dark the lab's shading makes a shadow, as a fraction of the lit
 /// ground beside it: `(0.01 E cos/π + 0.04) / (0.1 E cos/π + 0.04)` per
 /// unit albedo, with the sun's brightness `E` and `cos` its angle to the
-/// ground's normal (LAB.md "Local shading").
+/// ground's normal (the lab model, "Local shading").
 pub fn lab_shadow_ratio(brightness: f32, cos: f32) -> f32 {
     let sun = brightness * cos / std::f32::consts::PI;
     (0.01 * sun + 0.04) / (0.1 * sun + 0.04)
