@@ -20,7 +20,7 @@ fn scalar_step(like: Like) -> &'static dyn Step {
 }
 
 fn settings(like: Like, (width, height): (u32, u32)) -> Settings {
-    let (max_depth, spp, _) = like.defaults();
+    let raylab_like::Defaults { max_depth, spp, .. } = like.defaults();
     Settings {
         width,
         height,

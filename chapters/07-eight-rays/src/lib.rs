@@ -18,11 +18,10 @@
 //!
 //! The scene, the sky and the optics in lanes (eight rays against the
 //! ground and every sphere, masks instead of branches) are
-//! `raylab-lanes`', shared with chapter 8. With `--like chNN-…` ([`like`])
-//! it traces as any of chapters 1–5.
+//! `raylab-lanes`', shared with chapter 8. With `--like chNN-…`
+//! ([`raylab_like`]) it traces as any of chapters 1–5.
 
 pub mod camera;
-pub mod like;
 pub mod link;
 pub mod render;
 pub mod shade;
@@ -30,15 +29,10 @@ pub mod soa;
 pub mod stats;
 pub mod wave;
 
-use ch01_ray_cast::RayCast;
-use ch02_shadows::Shadows;
-use ch03_reflection::Reflection;
-use ch04_refraction::Refraction;
-use ch05_antialiasing::AntiAliasing;
 use raylab::{Hit, Ray, Step, Surface, Vec3};
 use raylab_cli::Chapter;
 
-pub use like::Like;
+pub use raylab_like::{Features, Like};
 
 /// Chapter 7's step: a Whitted chapter's shading, rendered in waves.
 ///
@@ -52,19 +46,11 @@ pub struct EightRays {
 
 impl Step for EightRays {
     fn shade(&self, ray: &Ray, hit: &Hit, surface: &mut Surface) -> Vec3 {
-        match self.like {
-            Like::RayCast => RayCast.shade(ray, hit, surface),
-            Like::Shadows => Shadows.shade(ray, hit, surface),
-            Like::Reflection => Reflection.shade(ray, hit, surface),
-            Like::Refraction | Like::AntiAliasing => Refraction.shade(ray, hit, surface),
-        }
+        self.like.shade(ray, hit, surface)
     }
 
     fn lab_five(&self) -> [(f32, f32); 5] {
-        match self.like {
-            Like::AntiAliasing => AntiAliasing.lab_five(),
-            _ => raylab::sampling::LAB_FIVE,
-        }
+        self.like.lab_five()
     }
 }
 
@@ -74,15 +60,15 @@ pub const BINARY: &str = "ch07-eight-rays";
 /// Chapter 7's program, tracing as the chapter `like` does, with its
 /// defaults (chapter 5's when `--like` is not given).
 pub fn chapter(like: Like) -> Chapter<EightRays> {
-    let (max_depth, spp, probe) = like.defaults();
+    let defaults = like.defaults();
     Chapter {
         binary: BINARY,
         about: "Chapter 7, eight rays at a time: chapter 5's image, to the byte, traced in waves of \
                 8-wide SIMD. --like ch01-ray-cast … ch05-antialiasing traces as that chapter does, \
                 with its defaults (default: ch05-antialiasing).",
-        max_depth,
-        spp,
-        probe,
+        max_depth: defaults.max_depth,
+        spp: defaults.spp,
+        probe: defaults.probe,
         step: EightRays { like },
         render: render::render_waves,
     }

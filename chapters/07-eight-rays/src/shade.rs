@@ -8,7 +8,7 @@ use raylab::Scene;
 use raylab_lanes::{Hits, SkyX8, Surfaces};
 use wide::{CmpGt, f32x8};
 
-use crate::like::Features;
+use crate::Features;
 use crate::soa::Vec3x8;
 
 /// The sky and the sun as eight-lane constants.

@@ -17,8 +17,8 @@ use raylab::{RayKind, Vec3};
 use raylab_lanes::{SceneX8, reflect, refract};
 use wide::{CmpGt, f32x8};
 
+use crate::Features;
 use crate::camera::{Primary, PrimaryRays};
-use crate::like::Features;
 use crate::link::{LATER, settle};
 use crate::shade::{Light, senders};
 use crate::soa::{Group, LANES, Rays, Vec3x8};

@@ -9,7 +9,7 @@ use rayon::prelude::*;
 use raylab::camera::Camera;
 use raylab::frame::{Keep, Rendered, Settings};
 use raylab::sampling::Sampling;
-use raylab::{NoProgress, Scene};
+use raylab::{NoProgress, Scene, Step};
 use raylab_plot::colour::series_colour;
 use raylab_plot::text::Anchor;
 use raylab_plot::{Canvas, Colormap, ColourScale, Corner, LinePlot, Series, heatmap_figure};
@@ -33,7 +33,7 @@ pub fn chapter5_settings(width: u32, height: u32) -> Settings {
         epsilon: 1e-4,
         sampling: Sampling::new(5, None, 0)
             .expect("5 rays per pixel")
-            .with_lab_five(ch05_antialiasing::lab_five()),
+            .with_lab_five(Like::AntiAliasing.lab_five()),
     }
 }
 

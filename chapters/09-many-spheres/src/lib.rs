@@ -22,13 +22,7 @@ pub mod bvh;
 pub mod bvh_x8;
 pub mod field;
 pub mod figures;
-pub mod like;
 
-use ch01_ray_cast::RayCast;
-use ch02_shadows::Shadows;
-use ch03_reflection::Reflection;
-use ch04_refraction::Refraction;
-use ch05_antialiasing::AntiAliasing;
 use ch06_path_tracing::{PathProgram, PathRender, PathSettings};
 use ch07_eight_rays::EightRays;
 use ch07_eight_rays::render::render_waves_with;
@@ -41,7 +35,7 @@ use raylab_cli::{Chapter, Program, Renderer};
 
 pub use bvh::Bvh;
 pub use bvh_x8::BvhX8;
-pub use like::Like;
+pub use raylab_like::Like;
 
 /// The program's name, which is also its default output folder.
 pub const BINARY: &str = "ch09-many-spheres";
@@ -55,19 +49,11 @@ pub struct ManySpheres {
 
 impl Step for ManySpheres {
     fn shade(&self, ray: &Ray, hit: &Hit, surface: &mut Surface) -> Vec3 {
-        match self.like {
-            Like::RayCast => RayCast.shade(ray, hit, surface),
-            Like::Shadows => Shadows.shade(ray, hit, surface),
-            Like::Reflection => Reflection.shade(ray, hit, surface),
-            Like::Refraction | Like::AntiAliasing => Refraction.shade(ray, hit, surface),
-        }
+        self.like.shade(ray, hit, surface)
     }
 
     fn lab_five(&self) -> [(f32, f32); 5] {
-        match self.like {
-            Like::AntiAliasing => AntiAliasing.lab_five(),
-            _ => raylab::sampling::LAB_FIVE,
-        }
+        self.like.lab_five()
     }
 }
 
@@ -143,7 +129,7 @@ pub fn chapter(like: Like) -> Chapter<ManySpheres> {
 }
 
 fn chapter_with<S: Step>(step: S, like: Like, render: Renderer<S>) -> Chapter<S> {
-    let (max_depth, spp, probe) = like.defaults();
+    let defaults = like.defaults();
     Chapter {
         binary: BINARY,
         about: "Chapter 9, many spheres: every ray's hit found through a bounding volume hierarchy, \
@@ -152,9 +138,9 @@ fn chapter_with<S: Step>(step: S, like: Like, render: Renderer<S>) -> Chapter<S>
                 at a time as chapter 7 does; --paths path-traces eight paths at a time as chapter \
                 8 does (chapter 6's flags); --generate-field N [--seed S] prints a scene file of N \
                 random spheres.",
-        max_depth,
-        spp,
-        probe,
+        max_depth: defaults.max_depth,
+        spp: defaults.spp,
+        probe: defaults.probe,
         step,
         render,
     }

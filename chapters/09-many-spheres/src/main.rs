@@ -1,15 +1,16 @@
 //! `cargo run --release -p ch09-many-spheres -- --help`
 //!
 //! Flags of its own, read before the shared command line sees the rest:
-//! `--like chNN-…` (which chapter's tracing and defaults), `--eight`
-//! (chapter 7's waves through the tree), `--paths` (chapter 8's paths
-//! through the tree, with chapter 6's flags), and `--generate-field N
-//! [--seed S]`, which prints a scene file instead of rendering.
+//! `--eight` (chapter 7's waves through the tree), `--paths` (chapter 8's
+//! paths through the tree, with chapter 6's flags), and `--generate-field
+//! N [--seed S]`, which prints a scene file instead of rendering.
+//! `--like chNN-…` (which chapter's tracing and defaults) is one of the
+//! shared command line's flags here, as in chapter 7.
 use std::ffi::OsString;
 use std::process::ExitCode;
 
 use ch09_many_spheres::field::{MAX_FIELD, field};
-use ch09_many_spheres::{BINARY, PATHS, chapter, chapter_eight, like::take_like};
+use ch09_many_spheres::{BINARY, PATHS, chapter, chapter_eight};
 
 fn main() -> ExitCode {
     let args: Vec<OsString> = std::env::args_os().collect();
@@ -25,19 +26,17 @@ fn main() -> ExitCode {
             ExitCode::SUCCESS
         })
     } else {
-        take_like(args).and_then(|(like, rest)| {
-            let (eight, rest) = take_flag(rest, "--eight");
-            let (paths, rest) = take_flag(rest, "--paths");
-            match (eight, paths) {
-                (true, true) => Err("--eight and --paths cannot go together: give one".into()),
-                (true, false) => Ok(raylab_cli::main_with_args(&chapter_eight(like), rest)),
-                (false, true) if like_given => {
-                    Err("--like cannot go with --paths, which path-traces as chapter 6 does".into())
-                }
-                (false, true) => Ok(ch06_path_tracing::main_with_args(&PATHS, rest)),
-                (false, false) => Ok(raylab_cli::main_with_args(&chapter(like), rest)),
+        let (eight, rest) = take_flag(args, "--eight");
+        let (paths, rest) = take_flag(rest, "--paths");
+        match (eight, paths) {
+            (true, true) => Err("--eight and --paths cannot go together: give one".into()),
+            (true, false) => Ok(raylab_like::main(chapter_eight, rest)),
+            (false, true) if like_given => {
+                Err("--like cannot go with --paths, which path-traces as chapter 6 does".into())
             }
-        })
+            (false, true) => Ok(ch06_path_tracing::main_with_args(&PATHS, rest)),
+            (false, false) => Ok(raylab_like::main(chapter, rest)),
+        }
     };
     result.unwrap_or_else(|message| {
         eprintln!("{BINARY}: error: {message}");

@@ -1,7 +1,6 @@
 //! The program: the shared command line, with `--like` and `--shader`,
 //! and what runs when.
 
-use std::ffi::OsString;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -10,20 +9,20 @@ use raylab_cli::{CliError, CommonFlags, Program, usage_line};
 
 use crate::BINARY;
 use crate::gpu::Gpu;
-use crate::like::{Like, take_like};
+use crate::like::Like;
 use crate::run::{self, Error};
 use crate::shader::{self, Source};
 
 /// The program's name and defaults when it traces as `like`.
 pub fn program(like: Like) -> Program {
-    let (max_depth, spp, _) = like.defaults();
+    let defaults = like.defaults();
     Program {
         binary: BINARY,
         about: "Chapter 10, the lab as it ran: the tracer as a WGSL compute shader, one invocation \
                 per pixel, reloaded on save with --watch. --like ch01-ray-cast … ch05-antialiasing \
                 traces as that chapter does, with its defaults (default: ch05-antialiasing).",
-        max_depth,
-        spp,
+        max_depth: defaults.max_depth,
+        spp: defaults.spp,
     }
 }
 
@@ -41,8 +40,9 @@ pub struct GpuFlags {
 }
 
 /// The flags every program takes, with this chapter's defaults, and its own.
-pub fn command(like: Like) -> clap::Command {
-    GpuFlags::augment_args(CommonFlags::command(&program(like))).after_help(format!(
+pub fn command() -> clap::Command {
+    let command = CommonFlags::command(&program(Like::AntiAliasing)).arg(raylab_like::arg());
+    GpuFlags::augment_args(command).after_help(format!(
         "Needs a Vulkan adapter (lavapipe runs it on the CPU). Set {}=1 to act as if there were none.",
         crate::gpu::NO_ADAPTER_VAR
     ))
@@ -51,16 +51,10 @@ pub fn command(like: Like) -> clap::Command {
 /// The whole program: parse, check the shader, find the GPU, render (or
 /// watch). Bad input gives one line on stderr and exit code 2.
 pub fn main() -> ExitCode {
-    let (like, rest) = match take_like(std::env::args_os().collect::<Vec<OsString>>()) {
-        Ok(parsed) => parsed,
-        Err(message) => {
-            eprintln!("{BINARY}: error: {message}");
-            return ExitCode::from(2);
-        }
-    };
-    raylab_cli::main_of(BINARY, command(like), rest, |matches| {
+    raylab_cli::main_of(BINARY, command(), std::env::args_os(), |matches| {
         let usage = |e: clap::Error| CliError::Usage(usage_line(&e));
-        let options = CommonFlags::from_arg_matches(matches).map_err(usage)?;
+        let mut options = CommonFlags::from_arg_matches(matches).map_err(usage)?;
+        let like = raylab_like::chosen(matches, &mut options.max_depth, &mut options.spp);
         let flags = GpuFlags::from_arg_matches(matches).map_err(usage)?;
         run_program(like, &options, &flags).map_err(|error| match error {
             Error::Cli(error) => error,

@@ -17,7 +17,7 @@ use raylab::{Camera, Keep, Sampling, Scene, Settings, Step};
 
 /// A chapter's settings at 320 × 240, with its default depth and samples.
 fn settings(like: Like) -> Settings {
-    let (max_depth, spp, _) = like.defaults();
+    let raylab_like::Defaults { max_depth, spp, .. } = like.defaults();
     Settings {
         width: 320,
         height: 240,

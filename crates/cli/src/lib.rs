@@ -676,7 +676,7 @@ pub fn main<S: Step>(chapter: &Chapter<S>) -> ExitCode {
 }
 
 /// [`main`] with the arguments given (the first is the program's name),
-/// for a program that reads a flag of its own first (chapter 7's `--like`).
+/// for a program that reads a flag of its own first (chapter 9's `--eight`).
 pub fn main_with_args<S: Step>(
     chapter: &Chapter<S>,
     args: impl IntoIterator<Item = impl Into<OsString> + Clone>,
@@ -685,14 +685,20 @@ pub fn main_with_args<S: Step>(
     main_of(chapter.binary, command, args, |matches| {
         let options =
             Options::from_arg_matches(matches).map_err(|e| CliError::Usage(usage_line(&e)))?;
-        if options.ray_tree.watch {
-            return crate::watch::watch(chapter, &options);
-        }
-        let report = run(chapter, &options)?;
-        // Quiet or not: with --quiet the report is only what was asked for.
-        print_report(chapter, &options, &report);
-        Ok(())
+        run_options(chapter, &options)
     })
+}
+
+/// What a chapter's program does once its options are parsed: render and
+/// report, or render again on every save with `--watch`.
+pub fn run_options<S: Step>(chapter: &Chapter<S>, options: &Options) -> Result<(), CliError> {
+    if options.ray_tree.watch {
+        return crate::watch::watch(chapter, options);
+    }
+    let report = run(chapter, options)?;
+    // Quiet or not: with --quiet the report is only what was asked for.
+    print_report(chapter, options, &report);
+    Ok(())
 }
 
 /// The `main` of every program on the shared command line, the Whitted

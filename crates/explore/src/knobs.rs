@@ -65,7 +65,7 @@ impl Knobs {
             1..=5 => {
                 self.like = Like::ALL[n as usize - 1];
                 self.paths = false;
-                let (max_depth, spp, _) = self.like.defaults();
+                let raylab_like::Defaults { max_depth, spp, .. } = self.like.defaults();
                 self.max_depth = max_depth;
                 self.spp = spp;
                 true

@@ -385,7 +385,7 @@ impl Explorer {
         // the Whitted chapter chosen last, at that chapter's rays per
         // pixel (not the hundreds of paths per pixel asked for).
         let spp = if self.knobs.paths {
-            self.knobs.like.defaults().1
+            self.knobs.like.defaults().spp
         } else {
             self.knobs.spp
         };

@@ -39,7 +39,7 @@ pub fn measure(size: Size) -> Result<(String, Vec<GpuTiming>), String> {
     let scene = (Scene::lab(), Camera::lab());
     let mut timings = Vec::new();
     for like in Like::ALL {
-        let (max_depth, spp, _) = like.defaults();
+        let raylab_like::Defaults { max_depth, spp, .. } = like.defaults();
         let settings = Settings {
             width: size.width,
             height: size.height,

@@ -62,7 +62,7 @@ pub fn make_figures(dir: &Path, size: Size) -> Result<Vec<PathBuf>, JobError> {
 
 /// The settings chapter 7 renders with, as `like` by default, at `size`.
 pub fn chapter_settings(size: Size, like: Like) -> Settings {
-    let (max_depth, spp, _) = like.defaults();
+    let raylab_like::Defaults { max_depth, spp, .. } = like.defaults();
     Settings {
         width: size.width,
         height: size.height,
