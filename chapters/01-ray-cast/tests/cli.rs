@@ -240,6 +240,17 @@ fn help_names_every_flag_with_the_chapters_defaults() {
 /// `--watch`: a save renders again; a bad save keeps watching; Ctrl-C ends it.
 #[test]
 fn a_watched_scene_is_rendered_again_after_each_save() {
+    watched_scene_renders_again(true);
+}
+
+/// The same where the file system sends no file events (network shares,
+/// some containers): the watch sees the saves by looking.
+#[test]
+fn a_watched_scene_is_rendered_again_where_no_file_events_arrive() {
+    watched_scene_renders_again(false);
+}
+
+fn watched_scene_renders_again(file_events: bool) {
     use std::io::{BufRead, BufReader};
     use std::sync::mpsc;
     use std::time::Duration;
@@ -259,6 +270,10 @@ fn a_watched_scene_is_rendered_again_after_each_save() {
             "--scene",
             "scene.toml",
         ])
+        .env(
+            raylab_cli::saves::EVENTS_VAR,
+            if file_events { "on" } else { "off" },
+        )
         .current_dir(dir.path())
         .stdout(std::process::Stdio::piped())
         .stderr(std::process::Stdio::piped())

@@ -9,6 +9,7 @@
 pub mod diagrams;
 pub mod output;
 pub mod probe_text;
+pub mod saves;
 pub mod scene_file;
 pub mod watch;
 
