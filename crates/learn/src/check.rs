@@ -3,7 +3,7 @@
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 use image::RgbImage;
 use raylab::{Camera, Keep, NoProgress, Scene, Step, render};
@@ -235,9 +235,6 @@ fn check_core_steps(
     ) else {
         return Verdict::Broken(format!("no chapter {} to render", exercise.chapter));
     };
-    if !lab.target.join("debug").join(&program).exists() {
-        first_build_note(out);
-    }
     // Compiler messages name the copy the build compiles; show the
     // learner's file instead (the same lines where the whole file is theirs).
     let shown_as = [(
@@ -245,14 +242,19 @@ fn check_core_steps(
         format!("{}/", shown(&lab.core_src(), &here)),
     )];
     // The tests first: when they fail, nothing else needs building.
-    let built = match cargo_build(
-        &manifest,
-        &lab.target,
-        &["-p", "raylab", "--lib", "--tests"],
-        &shown_as,
-        Builds::Lab,
-        out,
-    ) {
+    let note = "compiling the core with your code, for its tests, the first time: about a \
+                minute on 2 cores (the libraries under it come from learn's own build); \
+                later checks recompile only what you change …";
+    let built = match noted_build(lab, "core-tests", note, out, |out| {
+        cargo_build(
+            &manifest,
+            &lab.target,
+            &["-p", "raylab", "--lib", "--tests"],
+            &shown_as,
+            Builds::Lab,
+            out,
+        )
+    }) {
         Ok(built) => built,
         Err(verdict) => return verdict,
     };
@@ -263,14 +265,21 @@ fn check_core_steps(
     if let Err(verdict) = run_tests(&tests, &build, exercise.tests, limits.tests, out) {
         return verdict;
     }
-    let built = match cargo_build(
-        &manifest,
-        &lab.target,
-        &["-p", package, "--bin", &program],
-        &shown_as,
-        Builds::Lab,
-        out,
-    ) {
+    let note = format!(
+        "compiling the command line and chapter {} on your core, the first time: under a \
+         minute on 2 cores …",
+        exercise.chapter
+    );
+    let built = match noted_build(lab, &program, &note, out, |out| {
+        cargo_build(
+            &manifest,
+            &lab.target,
+            &["-p", package, "--bin", &program],
+            &shown_as,
+            Builds::Lab,
+            out,
+        )
+    }) {
         Ok(built) => built,
         Err(verdict) => return verdict,
     };
@@ -304,32 +313,69 @@ fn check_core_steps(
 /// Build the exercise's program and test harness in the shared target.
 fn build(lab: &Lab, exercise: &Exercise, out: &mut dyn Write) -> Result<Built, Verdict> {
     let folder = lab.folder(exercise);
-    // The first build of an exercise compiles the core for it (the
-    // libraries under it come from the workspace's own build).
-    let program = format!(
-        "{}{}",
-        lab.program_name(exercise),
-        std::env::consts::EXE_SUFFIX
+    // The first build of an exercise compiles the core and the chapters
+    // under it for it (the libraries under those come from learn's own
+    // build); later ones, only the learner's crate.
+    let note = format!(
+        "compiling {exercise} with the core and chapters under it, the first time: about a \
+         minute on 2 cores; later checks recompile only your crate …"
     );
-    if !lab.target.join("debug").join(program).exists() {
-        first_build_note(out);
-    }
-    cargo_build(
-        &folder.join("Cargo.toml"),
-        &lab.target,
-        &["--all-targets"],
-        &[],
-        Builds::Lab,
-        out,
-    )
+    noted_build(lab, &lab.program_name(exercise), &note, out, |out| {
+        cargo_build(
+            &folder.join("Cargo.toml"),
+            &lab.target,
+            &["--all-targets"],
+            &[],
+            Builds::Lab,
+            out,
+        )
+    })
 }
 
-fn first_build_note(out: &mut dyn Write) {
-    let _ = writeln!(
-        out,
-        "  building your exercise for the first time (a minute or two; later checks take seconds) …"
-    );
-    let _ = out.flush();
+/// A build that takes a while the first time: say what it compiles
+/// before it starts, and how long it took after. "The first time" is
+/// kept as a stamp in the target folder (`learn-built/KEY-VERSION`),
+/// written once the build succeeded: a build that failed, or a target
+/// folder cleaned, is first again.
+pub(crate) fn noted_build(
+    lab: &Lab,
+    key: &str,
+    note: &str,
+    out: &mut dyn Write,
+    build: impl FnOnce(&mut dyn Write) -> Result<Built, Verdict>,
+) -> Result<Built, Verdict> {
+    let stamp = lab
+        .target
+        .join("learn-built")
+        .join(format!("{key}-{}", lab.version));
+    let first = !stamp.exists();
+    if first {
+        let _ = writeln!(out, "  {note}");
+        let _ = out.flush();
+    }
+    let start = Instant::now();
+    let built = build(out)?;
+    if first {
+        if let Some(parent) = stamp.parent() {
+            let _ = std::fs::create_dir_all(parent);
+        }
+        let _ = std::fs::write(&stamp, "built once by `learn check`\n");
+        took(start, out);
+    }
+    Ok(built)
+}
+
+/// How long a first build took, when it was long enough to wonder.
+pub(crate) fn took(start: Instant, out: &mut dyn Write) {
+    let seconds = start.elapsed().as_secs();
+    if seconds >= 5 {
+        let _ = writeln!(
+            out,
+            "  (compiled in {} min {:02} s)",
+            seconds / 60,
+            seconds % 60
+        );
+    }
 }
 
 /// What a [`cargo_build`] compiles, which decides how.
