@@ -45,6 +45,9 @@ pub enum Verdict {
     TestsFail {
         failed: usize,
         of: usize,
+        /// The failing tests, by their function names (`tests::…`): what
+        /// the catalogue of mistakes matches.
+        failing: Vec<String>,
     },
     TestsTimedOut,
     RenderPanicked(String),
@@ -139,7 +142,10 @@ fn check_steps(
     };
     let _ = writeln!(out, "  ✓ it compiles");
 
-    if with_tests && let Err(verdict) = run_tests(&tests, &folder, &[], limits.tests, out) {
+    if with_tests
+        && let Err(verdict) =
+            run_tests(&tests, &folder, &folder.join("src"), &[], limits.tests, out)
+    {
         return verdict;
     }
 
@@ -262,7 +268,14 @@ fn check_core_steps(
         return Verdict::Broken("the build made no test harness for the core".into());
     };
     let _ = writeln!(out, "  ✓ it compiles");
-    if let Err(verdict) = run_tests(&tests, &build, exercise.tests, limits.tests, out) {
+    if let Err(verdict) = run_tests(
+        &tests,
+        &build,
+        &build.join("raylab/src"),
+        exercise.tests,
+        limits.tests,
+        out,
+    ) {
         return verdict;
     }
     let note = format!(
@@ -446,6 +459,7 @@ pub(crate) fn cargo_build(
 fn run_tests(
     harness: &Path,
     folder: &Path,
+    src: &Path,
     filters: &[&str],
     limit: Duration,
     out: &mut dyn Write,
@@ -466,12 +480,22 @@ fn run_tests(
         );
         return Err(Verdict::TestsTimedOut);
     }
-    let results = parse_test_output(&output.stdout);
+    let mut results = parse_test_output(&output.stdout);
+    let titles = crate::run::test_titles(src);
+    for result in &mut results {
+        if let Some(title) = crate::run::title_of(&titles, &result.name) {
+            result.sentence = title;
+        }
+    }
     let failed: Vec<&TestResult> = results.iter().filter(|r| !r.passed).collect();
     if results.is_empty() || (!output.success() && failed.is_empty()) {
         let why = panic_message(&output.stderr).unwrap_or_else(|| "no test ran".into());
         let _ = writeln!(out, "  ✗ its tests could not run: {why}");
-        return Err(Verdict::TestsFail { failed: 0, of: 0 });
+        return Err(Verdict::TestsFail {
+            failed: 0,
+            of: 0,
+            failing: Vec::new(),
+        });
     }
     if failed.is_empty() {
         let _ = writeln!(out, "  ✓ its {} tests pass:", results.len());
@@ -483,11 +507,18 @@ fn run_tests(
             results.len()
         );
     }
+    // A message is a few lines at most, and the same `todo!` once.
+    let mut shown_before: Vec<&str> = Vec::new();
     for result in &results {
         let mark = if result.passed { "✓" } else { "✗" };
         let _ = writeln!(out, "      {mark} {}", result.sentence);
         if let Some(message) = &result.message {
-            let _ = writeln!(out, "          {message}");
+            if shown_before.contains(&message.as_str()) {
+                let _ = writeln!(out, "          (the same message as above)");
+            } else {
+                let _ = writeln!(out, "          {}", crate::run::shortened(message));
+                shown_before.push(message);
+            }
         }
     }
     if failed.is_empty() {
@@ -496,6 +527,7 @@ fn run_tests(
         Err(Verdict::TestsFail {
             failed: failed.len(),
             of: results.len(),
+            failing: failed.iter().map(|r| r.name.clone()).collect(),
         })
     }
 }
