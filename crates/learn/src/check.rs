@@ -177,6 +177,11 @@ fn check_steps(
         if let Err(error) = lab.record_exercise_pass(exercise) {
             let _ = writeln!(out, "learn: could not record the pass: {error}");
         }
+        let _ = writeln!(
+            out,
+            "{}",
+            crate::path::next_line(&exercise.name(), &lab.progress())
+        );
     }
     verdict
 }
@@ -319,6 +324,11 @@ fn check_core_steps(
         if let Err(error) = lab.record_core_pass(exercise.name) {
             let _ = writeln!(out, "learn: could not record the pass: {error}");
         }
+        let _ = writeln!(
+            out,
+            "{}",
+            crate::path::next_line(exercise.name, &lab.progress())
+        );
     }
     verdict
 }

@@ -33,8 +33,14 @@ enum Command {
     Check { exercise: String },
     /// Check an exercise again every time you save, until Ctrl-C
     Watch { exercise: String },
-    /// What to do in an exercise, and how
-    Hint { exercise: String },
+    /// A hint, one level at a time: 1 a nudge (what to think about), 2 the
+    /// rule (what the code must do), 3 the recipe (how). Without LEVEL, the
+    /// level after the last one you asked for
+    Hint {
+        exercise: String,
+        #[arg(value_parser = clap::value_parser!(u8).range(1..=3))]
+        level: Option<u8>,
+    },
     /// Every exercise, in order, and how far you are
     List,
 }
@@ -96,15 +102,31 @@ fn run(cli: Cli) -> Result<ExitCode, ExitCode> {
             learn::watch::watch(&lab, item, &mut out).map_err(|_| ExitCode::from(2))?;
             Ok(ExitCode::SUCCESS)
         }
-        Command::Hint { exercise } => {
+        Command::Hint { exercise, level } => {
             let item = find(&exercise)?;
-            let _ = writeln!(out, "{}: {}", item.title(), item.hint());
-            let page = match item {
-                Item::Core(_) => learn::core::PAGE,
-                Item::Chapter(chapter) => chapter.page,
-                Item::Shader => shader::PAGE,
-            };
-            if item == Item::Shader {
+            let name = item.name();
+            let last = lab.progress().hints.get(&name).copied().unwrap_or(0);
+            let level = level.unwrap_or((last + 1).min(3));
+            const LEVELS: [&str; 3] = ["a nudge", "the rule", "the recipe"];
+            let text = item.hints()[usize::from(level - 1)];
+            let _ = writeln!(
+                out,
+                "{}, hint {level} of 3 ({}): {text}",
+                item.title(),
+                LEVELS[usize::from(level - 1)]
+            );
+            if let Err(error) = lab.record_hint(&name, level.max(last)) {
+                let _ = writeln!(out, "learn: could not record the hint: {error}");
+            }
+            let page = item.page();
+            if level < 3 {
+                let _ = writeln!(
+                    out,
+                    "More: `cargo run -p learn -- hint {name}` gives {} (hint {}); the book: {page}",
+                    LEVELS[usize::from(level)],
+                    level + 1
+                );
+            } else if item == Item::Shader {
                 let _ = writeln!(
                     out,
                     "The check asks naga whether the shader compiles, then renders it 160×120 \
@@ -132,6 +154,10 @@ fn run(cli: Cli) -> Result<ExitCode, ExitCode> {
                  caster given (start at `1`):"
             );
             let mut passed = 0;
+            let width = path::items()
+                .map(|i| i.title().chars().count())
+                .max()
+                .unwrap_or(0);
             for item in path::items() {
                 let state = if item.passed(&progress) {
                     passed += 1;
@@ -141,7 +167,12 @@ fn run(cli: Cli) -> Result<ExitCode, ExitCode> {
                 } else {
                     "not started"
                 };
-                let _ = writeln!(out, "  {:<8} {:<52} {state}", item.name(), item.title());
+                let _ = writeln!(
+                    out,
+                    "  {:<8} {:<width$}  {state}",
+                    item.name(),
+                    item.title()
+                );
             }
             let _ = writeln!(
                 out,
