@@ -48,6 +48,8 @@ pub enum Verdict {
         /// The failing tests, by their function names (`tests::…`): what
         /// the catalogue of mistakes matches.
         failing: Vec<String>,
+        /// Their messages, in the same order.
+        messages: Vec<String>,
     },
     TestsTimedOut,
     RenderPanicked(String),
@@ -94,7 +96,100 @@ pub fn check_with(lab: &Lab, exercise: &Exercise, limits: Limits, out: &mut dyn 
     if let Verdict::Broken(why) = &verdict {
         let _ = writeln!(out, "learn: error: {why}");
     }
+    after_failure(
+        lab,
+        &exercise.name(),
+        &verdict,
+        &lab.folder(exercise).join("check"),
+        out,
+    );
     verdict
+}
+
+/// [`check_with`] without matching a failure with the catalogue of
+/// mistakes: how the catalogue's own mistakes are checked.
+pub(crate) fn check_quietly(
+    lab: &Lab,
+    exercise: &Exercise,
+    limits: Limits,
+    out: &mut dyn Write,
+) -> Verdict {
+    check_steps(lab, exercise, limits, true, out)
+}
+
+/// After a failed check: the mistake of the catalogue it matches, or that
+/// none does; and for a picture that differs, what it shows.
+fn after_failure(
+    lab: &Lab,
+    name: &str,
+    verdict: &Verdict,
+    picture_dir: &Path,
+    out: &mut dyn Write,
+) {
+    let matchable = matches!(
+        verdict,
+        Verdict::TestsFail { .. }
+            | Verdict::Differs(_)
+            | Verdict::NoisyDiffers(_)
+            | Verdict::NonFinite(_)
+    );
+    let Some(item) = crate::path::find(name).filter(|_| matchable) else {
+        return;
+    };
+    // Only a picture this check wrote: an older learner.png says nothing.
+    let read = |name: &str| {
+        matches!(verdict, Verdict::Differs(_))
+            .then(|| image::open(picture_dir.join(name)).ok())
+            .flatten()
+            .map(|image| image.to_rgb8())
+    };
+    let learner = read("learner.png");
+    let prints = crate::mistakes::fingerprints(lab, item, out);
+    let shown = learner.as_ref().map_or(
+        crate::mistakes::Picture::Unknown,
+        crate::mistakes::Picture::Differs,
+    );
+    let mut diagnosis = crate::mistakes::diagnose(&prints, verdict, shown);
+    if diagnosis == crate::mistakes::Diagnosis::Tied
+        && let crate::path::Item::Chapter(exercise) = item
+    {
+        // Mistakes that fail the same tests differ in their pictures:
+        // render the learner's too, though its tests failed.
+        let _ = std::fs::remove_file(picture_dir.join("learner.png"));
+        let mut quiet = Vec::new();
+        let picture = check_picture_with(lab, exercise, Limits::DEFAULT, &mut quiet);
+        let image = matches!(picture, Verdict::Differs(_))
+            .then(|| image::open(picture_dir.join("learner.png")).ok())
+            .flatten()
+            .map(|image| image.to_rgb8());
+        let shown = match &image {
+            Some(image) => crate::mistakes::Picture::Differs(image),
+            None if picture.passed() => crate::mistakes::Picture::AsReference,
+            None => crate::mistakes::Picture::Unknown,
+        };
+        diagnosis = crate::mistakes::diagnose(&prints, verdict, shown);
+    }
+    let src = match item {
+        crate::path::Item::Core(_) => lab.core_build().join("raylab/src"),
+        crate::path::Item::Chapter(exercise) => lab.folder(exercise).join("src"),
+        crate::path::Item::Shader => lab.shader_folder().join("src"),
+    };
+    let titles = crate::run::test_titles(&src);
+    let title = |name: &str| {
+        crate::run::title_of(&titles, name).unwrap_or_else(|| crate::run::sentence(name))
+    };
+    crate::mistakes::report(&diagnosis, verdict, &title, out);
+    if !matches!(diagnosis, crate::mistakes::Diagnosis::Likely(_))
+        && let (Some(learner), Some(reference)) = (&learner, read("reference.png"))
+        && let Some(symptom) = crate::mistakes::symptom(learner, &reference)
+    {
+        let _ = writeln!(
+            out,
+            "What the picture shows: {symptom}; probe its worst pixel with the commands above, \
+             and read {}",
+            item.page()
+        );
+    }
 }
 
 /// The check without the exercise's tests: build, render, compare. For
@@ -197,7 +292,24 @@ pub fn check_core(
     if let Verdict::Broken(why) = &verdict {
         let _ = writeln!(out, "learn: error: {why}");
     }
+    after_failure(
+        lab,
+        exercise.name,
+        &verdict,
+        &lab.core_check_dir(exercise),
+        out,
+    );
     verdict
+}
+
+/// [`check_core`] without matching a failure with the catalogue.
+pub(crate) fn check_core_quietly(
+    lab: &Lab,
+    exercise: &CoreExercise,
+    limits: Limits,
+    out: &mut dyn Write,
+) -> Verdict {
+    check_core_steps(lab, exercise, limits, out)
 }
 
 fn check_core_steps(
@@ -505,6 +617,7 @@ fn run_tests(
             failed: 0,
             of: 0,
             failing: Vec::new(),
+            messages: Vec::new(),
         });
     }
     if failed.is_empty() {
@@ -538,6 +651,10 @@ fn run_tests(
             failed: failed.len(),
             of: results.len(),
             failing: failed.iter().map(|r| r.name.clone()).collect(),
+            messages: failed
+                .iter()
+                .map(|r| r.message.clone().unwrap_or_default())
+                .collect(),
         })
     }
 }

@@ -43,6 +43,10 @@ enum Command {
     },
     /// Every exercise, in order, and how far you are
     List,
+    /// The known mistakes of an exercise: what each is, what it does to the
+    /// picture, where the book explains it, and (once a check has learnt
+    /// it) which tests it fails. A failed check names the one it matches
+    Mistakes { exercise: String },
 }
 
 /// Why the command could not run: one line, exit code 2.
@@ -144,6 +148,47 @@ fn run(cli: Cli) -> Result<ExitCode, ExitCode> {
                     RENDER_TIME_LIMIT.as_secs(),
                 );
             }
+            Ok(ExitCode::SUCCESS)
+        }
+        Command::Mistakes { exercise } => {
+            let item = find(&exercise)?;
+            let name = item.name();
+            let mistakes: Vec<_> = learn::mistakes::of(&name).collect();
+            if mistakes.is_empty() {
+                let _ = writeln!(out, "No mistakes of `{name}` are catalogued yet.");
+                return Ok(ExitCode::SUCCESS);
+            }
+            let cache = learn::mistakes::mistake_lab(&lab).dir.join("fingerprints");
+            let _ = writeln!(out, "The known mistakes of `{name}`, {}:", item.title());
+            for m in mistakes {
+                let _ = writeln!(out, "  {} — {}", m.slug, m.what);
+                let _ = writeln!(out, "      the picture: {}", m.picture);
+                let _ = writeln!(out, "      the book: {}", m.section);
+                let print: Option<learn::mistakes::Fingerprint> =
+                    std::fs::read_to_string(cache.join(format!("{}-{}.toml", m.exercise, m.slug)))
+                        .ok()
+                        .and_then(|text| toml::from_str(&text).ok());
+                if let Some(print) = print {
+                    let seen = if !print.failing.is_empty() {
+                        let tests: Vec<String> = print
+                            .failing
+                            .iter()
+                            .map(|t| learn::run::sentence(t))
+                            .collect();
+                        format!("fails {}", tests.join("; "))
+                    } else if print.image.is_some() {
+                        "passes the tests; its picture differs".to_owned()
+                    } else {
+                        print.verdict.clone()
+                    };
+                    let _ = writeln!(out, "      the check: {seen}");
+                }
+            }
+            let _ = writeln!(
+                out,
+                "A failed `check {name}` names the one whose failing tests (or, where the tests \
+                 pass, whose picture) match yours: `Likely mistake: SLUG`."
+            );
             Ok(ExitCode::SUCCESS)
         }
         Command::List => {
