@@ -199,12 +199,12 @@ pub const MISTAKES: [Mistake; 19] = [
     Mistake {
         exercise: "cosine",
         slug: "one-random-number",
-        what: "one random number for both coordinates of the disc point",
-        picture: "diffuse light leans to one side: every direction lies in one plane",
+        what: "one random number for both the radius and the angle of the disc point",
+        picture: "diffuse light leans to one side: the angle grows with the radius, so the directions spiral",
         section: "book/src/ch06-path-tracing.md, \"The equation, and the one path that estimates it\"",
         region: "cosine_direction",
-        from: "let y = 2.0 * random.uniform() - 1.0;",
-        to: "let y = x;",
+        from: "    let (x, y, r2) = loop {\n        let x = 2.0 * random.uniform() - 1.0;\n        let y = 2.0 * random.uniform() - 1.0;\n        let r2 = x * x + y * y;\n        if r2 < 1.0 {\n            break (x, y, r2);\n        }\n    };",
+        to: "    let u = random.uniform();\n    let (s, c) = (2.0 * std::f32::consts::PI * u).sin_cos();\n    let (x, y, r2) = (u.sqrt() * c, u.sqrt() * s, u);",
     },
     Mistake {
         exercise: "nee",
@@ -485,7 +485,9 @@ fn numbers(message: &str) -> Vec<f64> {
 }
 
 /// Whether every failing test the learner and a mistake share prints the
-/// same numbers (to a part in a thousand): the same wrong values.
+/// same numbers, within 2 %: the same wrong values (a statistical test's
+/// mean and z move a little with the random numbers drawn; two mistakes'
+/// values differ by far more).
 fn same_values(failing: &[String], messages: &[String], print: &Fingerprint) -> bool {
     let mut compared = 0;
     for (test, message) in failing.iter().zip(messages) {
@@ -500,7 +502,7 @@ fn same_values(failing: &[String], messages: &[String], print: &Fingerprint) -> 
             continue;
         }
         compared += 1;
-        let close = |x: f64, y: f64| (x - y).abs() <= 1e-3 * x.abs().max(y.abs()).max(1e-3);
+        let close = |x: f64, y: f64| (x - y).abs() <= 0.02 * x.abs().max(y.abs()).max(1e-3);
         if a.len() != b.len() || a.iter().zip(&b).any(|(x, y)| !close(*x, *y)) {
             return false;
         }
