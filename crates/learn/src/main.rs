@@ -159,6 +159,15 @@ fn run(cli: Cli) -> Result<ExitCode, ExitCode> {
                 return Ok(ExitCode::SUCCESS);
             }
             let cache = learn::mistakes::mistake_lab(&lab).dir.join("fingerprints");
+            // The tests by their titles, as the reference's sources give them.
+            let src = match item {
+                Item::Chapter(chapter) => lab.root.join(chapter.dir).join("src"),
+                _ => lab.root.join("src"),
+            };
+            let titles = learn::run::test_titles(&src);
+            let title = |name: &str| {
+                learn::run::title_of(&titles, name).unwrap_or_else(|| learn::run::sentence(name))
+            };
             let _ = writeln!(out, "The known mistakes of `{name}`, {}:", item.title());
             for m in mistakes {
                 let _ = writeln!(out, "  {} — {}", m.slug, m.what);
@@ -170,11 +179,7 @@ fn run(cli: Cli) -> Result<ExitCode, ExitCode> {
                         .and_then(|text| toml::from_str(&text).ok());
                 if let Some(print) = print {
                     let seen = if !print.failing.is_empty() {
-                        let tests: Vec<String> = print
-                            .failing
-                            .iter()
-                            .map(|t| learn::run::sentence(t))
-                            .collect();
+                        let tests: Vec<String> = print.failing.iter().map(|t| title(t)).collect();
                         format!("fails {}", tests.join("; "))
                     } else if print.image.is_some() {
                         "passes the tests; its picture differs".to_owned()
