@@ -371,9 +371,11 @@ fn check_core_steps(
         format!("{}/", shown(&lab.core_src(), &here)),
     )];
     // The tests first: when they fail, nothing else needs building.
-    let note = "compiling the core with your code, for its tests, the first time: about a \
-                minute on 2 cores (the libraries under it come from learn's own build); \
-                later checks recompile only what you change …";
+    // Most of a first check: the core, compiled for its tests, on top of
+    // the libraries learn's own build compiled already.
+    let note = "compiling the core with your code for its tests, the first time: about a \
+                minute on a quiet 2-core machine, two or three when it is busy; later checks \
+                recompile only what you change …";
     let built = match noted_build(lab, "core-tests", note, out, |out| {
         cargo_build(
             &manifest,
@@ -402,8 +404,7 @@ fn check_core_steps(
         return verdict;
     }
     let note = format!(
-        "compiling the command line and chapter {} on your core, the first time: under a \
-         minute on 2 cores …",
+        "compiling the command line and chapter {} on your core, the first time: seconds …",
         exercise.chapter
     );
     let built = match noted_build(lab, &program, &note, out, |out| {
@@ -458,8 +459,8 @@ fn build(lab: &Lab, exercise: &Exercise, out: &mut dyn Write) -> Result<Built, V
     // under it for it (the libraries under those come from learn's own
     // build); later ones, only the learner's crate.
     let note = format!(
-        "compiling {exercise} with the core and chapters under it, the first time: about a \
-         minute on 2 cores; later checks recompile only your crate …"
+        "compiling {exercise} with the core and chapters under it, the first time: under a \
+         minute on a quiet 2-core machine; later checks recompile only your crate …"
     );
     noted_build(lab, &lab.program_name(exercise), &note, out, |out| {
         cargo_build(
