@@ -129,6 +129,7 @@ impl Camera {
 mod tests {
     use super::*;
 
+    /// the lab's half height is tan 22.5°, in f32
     #[test]
     fn the_lab_half_height_is_tan_22_5_degrees_in_f32() {
         assert_eq!(Camera::lab().half_height, 0.414_213_57);

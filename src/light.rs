@@ -76,6 +76,7 @@ mod tests {
         assert!(LAB_SKY.radiance(d).abs_diff_eq(mid, 1e-6));
     }
 
+    /// the lab sky gives open ground an irradiance of π · (0.37, 0.54, 0.88)
     #[test]
     fn the_lab_sky_gives_open_ground_an_irradiance_of_pi_times_0_37_0_54_0_88() {
         let e = LAB_SKY.irradiance_facing_up();

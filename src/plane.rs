@@ -82,6 +82,7 @@ mod tests {
         assert_eq!(ground().intersect(&ray), None);
     }
 
+    /// a ray falling at 45° from height 2 lands at t = 2√2
     #[test]
     fn a_ray_falling_at_45_degrees_from_height_2_lands_at_t_2_sqrt_2() {
         let d = Vec3::new(1.0, -1.0, 0.0).normalize();

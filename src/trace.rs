@@ -494,11 +494,26 @@ mod tests {
             let mut tracer = Tracer::new(&scene, &MirrorWithShadow, max_depth, 1e-4);
             let traced = tracer.trace(Ray::new(Vec3::ZERO, Vec3::X));
             let counts = tracer.counts();
-            assert_eq!(counts.get(RayKind::Primary), 1);
-            assert_eq!(counts.get(RayKind::Reflection), u64::from(max_depth - 1));
-            assert_eq!(counts.get(RayKind::Shadow), u64::from(max_depth));
-            assert_eq!(traced.rays, 2 * max_depth);
-            assert_eq!(traced.deepest, max_depth);
+            assert_eq!(counts.get(RayKind::Primary), 1, "primary rays");
+            assert_eq!(
+                counts.get(RayKind::Reflection),
+                u64::from(max_depth - 1),
+                "reflections at max depth {max_depth}"
+            );
+            assert_eq!(
+                counts.get(RayKind::Shadow),
+                u64::from(max_depth),
+                "shadow rays at max depth {max_depth}"
+            );
+            assert_eq!(
+                traced.rays,
+                2 * max_depth,
+                "rays traced at max depth {max_depth}"
+            );
+            assert_eq!(
+                traced.deepest, max_depth,
+                "the deepest ray at max depth {max_depth}"
+            );
         }
     }
 
@@ -508,7 +523,11 @@ mod tests {
         let mut tracer = Tracer::new(&scene, &MirrorWithShadow, 5, 1e-4).with_log();
         tracer.trace(Ray::new(Vec3::ZERO, Vec3::X));
         let log = tracer.log();
-        assert_eq!(log.iter().map(|r| r.depth).max(), Some(5));
+        assert_eq!(
+            log.iter().map(|r| r.depth).max(),
+            Some(5),
+            "the deepest ray at max depth 5"
+        );
         // Each mirror ray's parent is the one before it, one level up.
         for ray in log.iter().filter(|r| r.kind == RayKind::Reflection) {
             let parent = &log[ray.parent.unwrap()];
@@ -542,7 +561,11 @@ mod tests {
         // Within budget nothing is cut.
         let mut shallow = Tracer::new(&scene, &Splitting, 8, 1e-4);
         let traced = shallow.trace(Ray::new(Vec3::ZERO, Vec3::X));
-        assert_eq!((traced.rays, traced.over_budget), (255, false));
+        assert_eq!(
+            (traced.rays, traced.over_budget),
+            (255, false),
+            "(rays traced, over budget) at max depth 8, a whole tree of 1 + 2 + … + 128 rays"
+        );
     }
 
     #[test]
@@ -598,6 +621,7 @@ mod tests {
         assert_eq!(tracer.counts().get(RayKind::Primary), 1);
     }
 
+    /// each bounce carries its parent's weight times its share
     #[test]
     fn each_bounce_carries_its_parents_weight_times_its_share() {
         // Every hit keeps half (local 1 · kept ½) and sends half on. Weights
@@ -631,7 +655,8 @@ mod tests {
         assert_eq!(
             kinds,
             [RayKind::Primary, RayKind::Refraction, RayKind::Reflection],
-            "the last ray pushed is the first popped"
+            "the rays traced at max depth 2, in order, when the first hit sends a reflection \
+             and then a refraction"
         );
         let weights: Vec<f32> = tracer.log().iter().map(|r| r.weight).collect();
         assert_eq!(weights, [1.0, 0.25, 0.25]);

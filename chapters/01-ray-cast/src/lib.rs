@@ -90,6 +90,7 @@ mod tests {
         assert!((c.x - 0.835_774_9).abs() < 1e-6, "{c}");
     }
 
+    /// a surface at 60° to the sun gets half
     #[test]
     fn a_surface_at_60_degrees_to_the_sun_gets_half() {
         let sun = Sun {

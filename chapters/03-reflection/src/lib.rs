@@ -66,6 +66,7 @@ mod tests {
 
     const MIRROR: Vec3 = Vec3::new(-1.25, 0.5, 0.5);
 
+    /// a mirror hit sends one ray of weight 0.6 in the mirror direction
     #[test]
     fn a_mirror_hit_sends_one_ray_of_weight_0_6_in_the_mirror_direction() {
         let scene = Scene::lab();

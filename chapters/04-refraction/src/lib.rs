@@ -141,9 +141,22 @@ mod tests {
             .iter()
             .filter(|r| r.kind == RayKind::TotalInternalReflection)
             .collect();
-        assert_eq!(tir.len(), 1, "{log:#?}");
+        let traced: Vec<String> = log
+            .iter()
+            .map(|r| format!("{:?} at depth {}", r.kind, r.depth))
+            .collect();
+        assert_eq!(
+            tir.len(),
+            1,
+            "totally internally reflected rays, of those traced: {}",
+            traced.join(", ")
+        );
         assert!((tir[0].weight - 0.7).abs() < 1e-7);
-        assert!(!log.iter().any(|r| r.kind == RayKind::Refraction));
+        assert!(
+            !log.iter().any(|r| r.kind == RayKind::Refraction),
+            "a refracted ray past the critical angle, of those traced: {}",
+            traced.join(", ")
+        );
         // The reflected ray stays inside: it heads back towards the centre side.
         assert!(tir[0].ray.direction.dot(normal) < 0.0);
     }

@@ -157,6 +157,7 @@ mod tests {
         LinearImage::from_pixels(2, 1, pixels)
     }
 
+    /// the Šidák threshold for one test at 5 % is 1.96
     #[test]
     fn the_sidak_threshold_for_one_test_at_5_percent_is_1_96() {
         assert!((sidak_threshold(0.05, 1) - 1.959_964).abs() < 1e-4);

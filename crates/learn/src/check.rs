@@ -3,7 +3,7 @@
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 use image::RgbImage;
 use raylab::{Camera, Keep, NoProgress, Scene, Step, render};
@@ -45,6 +45,11 @@ pub enum Verdict {
     TestsFail {
         failed: usize,
         of: usize,
+        /// The failing tests, by their function names (`tests::…`): what
+        /// the catalogue of mistakes matches.
+        failing: Vec<String>,
+        /// Their messages, in the same order.
+        messages: Vec<String>,
     },
     TestsTimedOut,
     RenderPanicked(String),
@@ -91,7 +96,106 @@ pub fn check_with(lab: &Lab, exercise: &Exercise, limits: Limits, out: &mut dyn 
     if let Verdict::Broken(why) = &verdict {
         let _ = writeln!(out, "learn: error: {why}");
     }
+    after_failure(
+        lab,
+        &exercise.name(),
+        &verdict,
+        &lab.folder(exercise).join("check"),
+        out,
+    );
     verdict
+}
+
+/// [`check_with`] without matching a failure with the catalogue of
+/// mistakes: how the catalogue's own mistakes are checked.
+pub(crate) fn check_quietly(
+    lab: &Lab,
+    exercise: &Exercise,
+    limits: Limits,
+    out: &mut dyn Write,
+) -> Verdict {
+    check_steps(lab, exercise, limits, true, out)
+}
+
+/// After a failed check: the mistake of the catalogue it matches, or that
+/// none does; and for a picture that differs, what it shows.
+fn after_failure(
+    lab: &Lab,
+    name: &str,
+    verdict: &Verdict,
+    picture_dir: &Path,
+    out: &mut dyn Write,
+) {
+    let matchable = matches!(
+        verdict,
+        Verdict::TestsFail { .. }
+            | Verdict::Differs(_)
+            | Verdict::NoisyDiffers(_)
+            | Verdict::NonFinite(_)
+    );
+    // A region still a `todo!` is no mistake: nothing to match.
+    let unwritten = matches!(
+        verdict,
+        Verdict::TestsFail { messages, .. }
+            if !messages.is_empty() && messages.iter().all(|m| m.starts_with("not yet implemented"))
+    );
+    let Some(item) = crate::path::find(name).filter(|_| matchable && !unwritten) else {
+        return;
+    };
+    // Only a picture this check wrote: an older learner.png says nothing.
+    let read = |name: &str| {
+        matches!(verdict, Verdict::Differs(_))
+            .then(|| image::open(picture_dir.join(name)).ok())
+            .flatten()
+            .map(|image| image.to_rgb8())
+    };
+    let learner = read("learner.png");
+    let prints = crate::mistakes::fingerprints(lab, item, out);
+    let shown = learner.as_ref().map_or(
+        crate::mistakes::Picture::Unknown,
+        crate::mistakes::Picture::Differs,
+    );
+    let mut diagnosis = crate::mistakes::diagnose(&prints, verdict, shown);
+    if diagnosis == crate::mistakes::Diagnosis::Tied
+        && let crate::path::Item::Chapter(exercise) = item
+    {
+        // Mistakes that fail the same tests differ in their pictures:
+        // render the learner's too, though its tests failed.
+        let _ = std::fs::remove_file(picture_dir.join("learner.png"));
+        let mut quiet = Vec::new();
+        let picture = check_picture_with(lab, exercise, Limits::DEFAULT, &mut quiet);
+        let image = matches!(picture, Verdict::Differs(_))
+            .then(|| image::open(picture_dir.join("learner.png")).ok())
+            .flatten()
+            .map(|image| image.to_rgb8());
+        let shown = match &image {
+            Some(image) => crate::mistakes::Picture::Differs(image),
+            None if picture.passed() => crate::mistakes::Picture::AsReference,
+            None => crate::mistakes::Picture::Unknown,
+        };
+        diagnosis = crate::mistakes::diagnose(&prints, verdict, shown);
+    }
+    let src = match item {
+        crate::path::Item::Core(_) => lab.core_build().join("raylab/src"),
+        crate::path::Item::Chapter(exercise) => lab.folder(exercise).join("src"),
+        crate::path::Item::Shader => lab.shader_folder().join("src"),
+    };
+    let titles = crate::run::test_titles(&src);
+    let title = |name: &str| {
+        crate::run::title_of(&titles, name).unwrap_or_else(|| crate::run::sentence(name))
+    };
+    crate::mistakes::report(&diagnosis, verdict, &title, out);
+    if !matches!(diagnosis, crate::mistakes::Diagnosis::Likely(_))
+        && let (Some(learner), Some(reference)) = (&learner, read("reference.png"))
+        && let Some(symptom) = crate::mistakes::symptom(learner, &reference)
+    {
+        let _ = writeln!(
+            out,
+            "What the picture shows: {symptom}; probe its worst pixel with the commands above, \
+             and read {}",
+            item.page()
+        );
+    }
 }
 
 /// The check without the exercise's tests: build, render, compare. For
@@ -139,7 +243,10 @@ fn check_steps(
     };
     let _ = writeln!(out, "  ✓ it compiles");
 
-    if with_tests && let Err(verdict) = run_tests(&tests, &folder, &[], limits.tests, out) {
+    if with_tests
+        && let Err(verdict) =
+            run_tests(&tests, &folder, &folder.join("src"), &[], limits.tests, out)
+    {
         return verdict;
     }
 
@@ -171,6 +278,11 @@ fn check_steps(
         if let Err(error) = lab.record_exercise_pass(exercise) {
             let _ = writeln!(out, "learn: could not record the pass: {error}");
         }
+        let _ = writeln!(
+            out,
+            "{}",
+            crate::path::next_line(&exercise.name(), &lab.progress())
+        );
     }
     verdict
 }
@@ -186,7 +298,24 @@ pub fn check_core(
     if let Verdict::Broken(why) = &verdict {
         let _ = writeln!(out, "learn: error: {why}");
     }
+    after_failure(
+        lab,
+        exercise.name,
+        &verdict,
+        &lab.core_check_dir(exercise),
+        out,
+    );
     verdict
+}
+
+/// [`check_core`] without matching a failure with the catalogue.
+pub(crate) fn check_core_quietly(
+    lab: &Lab,
+    exercise: &CoreExercise,
+    limits: Limits,
+    out: &mut dyn Write,
+) -> Verdict {
+    check_core_steps(lab, exercise, limits, out)
 }
 
 fn check_core_steps(
@@ -235,9 +364,6 @@ fn check_core_steps(
     ) else {
         return Verdict::Broken(format!("no chapter {} to render", exercise.chapter));
     };
-    if !lab.target.join("debug").join(&program).exists() {
-        first_build_note(out);
-    }
     // Compiler messages name the copy the build compiles; show the
     // learner's file instead (the same lines where the whole file is theirs).
     let shown_as = [(
@@ -245,14 +371,21 @@ fn check_core_steps(
         format!("{}/", shown(&lab.core_src(), &here)),
     )];
     // The tests first: when they fail, nothing else needs building.
-    let built = match cargo_build(
-        &manifest,
-        &lab.target,
-        &["-p", "raylab", "--lib", "--tests"],
-        &shown_as,
-        Builds::Lab,
-        out,
-    ) {
+    // Most of a first check: the core, compiled for its tests, on top of
+    // the libraries learn's own build compiled already.
+    let note = "compiling the core with your code for its tests, the first time: about a \
+                minute on a quiet 2-core machine, two or three when it is busy; later checks \
+                recompile only what you change …";
+    let built = match noted_build(lab, "core-tests", note, out, |out| {
+        cargo_build(
+            &manifest,
+            &lab.target,
+            &["-p", "raylab", "--lib", "--tests"],
+            &shown_as,
+            Builds::Lab,
+            out,
+        )
+    }) {
         Ok(built) => built,
         Err(verdict) => return verdict,
     };
@@ -260,17 +393,30 @@ fn check_core_steps(
         return Verdict::Broken("the build made no test harness for the core".into());
     };
     let _ = writeln!(out, "  ✓ it compiles");
-    if let Err(verdict) = run_tests(&tests, &build, exercise.tests, limits.tests, out) {
-        return verdict;
-    }
-    let built = match cargo_build(
-        &manifest,
-        &lab.target,
-        &["-p", package, "--bin", &program],
-        &shown_as,
-        Builds::Lab,
+    if let Err(verdict) = run_tests(
+        &tests,
+        &build,
+        &build.join("raylab/src"),
+        exercise.tests,
+        limits.tests,
         out,
     ) {
+        return verdict;
+    }
+    let note = format!(
+        "compiling the command line and chapter {} on your core, the first time: seconds …",
+        exercise.chapter
+    );
+    let built = match noted_build(lab, &program, &note, out, |out| {
+        cargo_build(
+            &manifest,
+            &lab.target,
+            &["-p", package, "--bin", &program],
+            &shown_as,
+            Builds::Lab,
+            out,
+        )
+    }) {
         Ok(built) => built,
         Err(verdict) => return verdict,
     };
@@ -297,6 +443,11 @@ fn check_core_steps(
         if let Err(error) = lab.record_core_pass(exercise.name) {
             let _ = writeln!(out, "learn: could not record the pass: {error}");
         }
+        let _ = writeln!(
+            out,
+            "{}",
+            crate::path::next_line(exercise.name, &lab.progress())
+        );
     }
     verdict
 }
@@ -304,32 +455,69 @@ fn check_core_steps(
 /// Build the exercise's program and test harness in the shared target.
 fn build(lab: &Lab, exercise: &Exercise, out: &mut dyn Write) -> Result<Built, Verdict> {
     let folder = lab.folder(exercise);
-    // The first build of an exercise compiles the core for it (the
-    // libraries under it come from the workspace's own build).
-    let program = format!(
-        "{}{}",
-        lab.program_name(exercise),
-        std::env::consts::EXE_SUFFIX
+    // The first build of an exercise compiles the core and the chapters
+    // under it for it (the libraries under those come from learn's own
+    // build); later ones, only the learner's crate.
+    let note = format!(
+        "compiling {exercise} with the core and chapters under it, the first time: under a \
+         minute on a quiet 2-core machine; later checks recompile only your crate …"
     );
-    if !lab.target.join("debug").join(program).exists() {
-        first_build_note(out);
-    }
-    cargo_build(
-        &folder.join("Cargo.toml"),
-        &lab.target,
-        &["--all-targets"],
-        &[],
-        Builds::Lab,
-        out,
-    )
+    noted_build(lab, &lab.program_name(exercise), &note, out, |out| {
+        cargo_build(
+            &folder.join("Cargo.toml"),
+            &lab.target,
+            &["--all-targets"],
+            &[],
+            Builds::Lab,
+            out,
+        )
+    })
 }
 
-fn first_build_note(out: &mut dyn Write) {
-    let _ = writeln!(
-        out,
-        "  building your exercise for the first time (a minute or two; later checks take seconds) …"
-    );
-    let _ = out.flush();
+/// A build that takes a while the first time: say what it compiles
+/// before it starts, and how long it took after. "The first time" is
+/// kept as a stamp in the target folder (`learn-built/KEY-VERSION`),
+/// written once the build succeeded: a build that failed, or a target
+/// folder cleaned, is first again.
+pub(crate) fn noted_build(
+    lab: &Lab,
+    key: &str,
+    note: &str,
+    out: &mut dyn Write,
+    build: impl FnOnce(&mut dyn Write) -> Result<Built, Verdict>,
+) -> Result<Built, Verdict> {
+    let stamp = lab
+        .target
+        .join("learn-built")
+        .join(format!("{key}-{}", lab.version));
+    let first = !stamp.exists();
+    if first {
+        let _ = writeln!(out, "  {note}");
+        let _ = out.flush();
+    }
+    let start = Instant::now();
+    let built = build(out)?;
+    if first {
+        if let Some(parent) = stamp.parent() {
+            let _ = std::fs::create_dir_all(parent);
+        }
+        let _ = std::fs::write(&stamp, "built once by `learn check`\n");
+        took(start, out);
+    }
+    Ok(built)
+}
+
+/// How long a first build took, when it was long enough to wonder.
+pub(crate) fn took(start: Instant, out: &mut dyn Write) {
+    let seconds = start.elapsed().as_secs();
+    if seconds >= 5 {
+        let _ = writeln!(
+            out,
+            "  (compiled in {} min {:02} s)",
+            seconds / 60,
+            seconds % 60
+        );
+    }
 }
 
 /// What a [`cargo_build`] compiles, which decides how.
@@ -400,6 +588,7 @@ pub(crate) fn cargo_build(
 fn run_tests(
     harness: &Path,
     folder: &Path,
+    src: &Path,
     filters: &[&str],
     limit: Duration,
     out: &mut dyn Write,
@@ -420,12 +609,23 @@ fn run_tests(
         );
         return Err(Verdict::TestsTimedOut);
     }
-    let results = parse_test_output(&output.stdout);
+    let mut results = parse_test_output(&output.stdout);
+    let titles = crate::run::test_titles(src);
+    for result in &mut results {
+        if let Some(title) = crate::run::title_of(&titles, &result.name) {
+            result.sentence = title;
+        }
+    }
     let failed: Vec<&TestResult> = results.iter().filter(|r| !r.passed).collect();
     if results.is_empty() || (!output.success() && failed.is_empty()) {
         let why = panic_message(&output.stderr).unwrap_or_else(|| "no test ran".into());
         let _ = writeln!(out, "  ✗ its tests could not run: {why}");
-        return Err(Verdict::TestsFail { failed: 0, of: 0 });
+        return Err(Verdict::TestsFail {
+            failed: 0,
+            of: 0,
+            failing: Vec::new(),
+            messages: Vec::new(),
+        });
     }
     if failed.is_empty() {
         let _ = writeln!(out, "  ✓ its {} tests pass:", results.len());
@@ -437,11 +637,19 @@ fn run_tests(
             results.len()
         );
     }
+    // A message is a few lines at most, and the same `todo!` once.
+    let mut shown_before: Vec<&str> = Vec::new();
     for result in &results {
         let mark = if result.passed { "✓" } else { "✗" };
         let _ = writeln!(out, "      {mark} {}", result.sentence);
         if let Some(message) = &result.message {
-            let _ = writeln!(out, "          {message}");
+            let todo = message.starts_with("not yet implemented");
+            if todo && shown_before.contains(&message.as_str()) {
+                let _ = writeln!(out, "          (the same todo! as above)");
+            } else {
+                let _ = writeln!(out, "          {}", crate::run::shortened(message));
+                shown_before.push(message);
+            }
         }
     }
     if failed.is_empty() {
@@ -450,6 +658,11 @@ fn run_tests(
         Err(Verdict::TestsFail {
             failed: failed.len(),
             of: results.len(),
+            failing: failed.iter().map(|r| r.name.clone()).collect(),
+            messages: failed
+                .iter()
+                .map(|r| r.message.clone().unwrap_or_default())
+                .collect(),
         })
     }
 }

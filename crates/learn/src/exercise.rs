@@ -47,7 +47,11 @@ pub struct Exercise {
     /// paths than its default, so that the learner's debug build renders in
     /// seconds).
     pub flags: &'static [&'static str],
-    /// What to do, in a few lines, for `learn hint`.
+    /// `learn hint`'s first level: a nudge, what to think about.
+    pub nudge: &'static str,
+    /// Its second: the rule the code must follow.
+    pub rule: &'static str,
+    /// Its third: what to do, in a few lines (the recipe).
     pub hint: &'static str,
 }
 
@@ -63,6 +67,8 @@ pub const EXERCISES: [Exercise; 8] = [
         page: "book/src/ch01-ray-casting.md",
         step: "src/lib.rs",
         flags: &[],
+        nudge: "How much sunlight a surface gets depends on how squarely it faces the sun.",
+        rule: "Irradiance is k · brightness · cos θ, none for a surface facing away; a matte surface sends albedo / π of it back, and the ambient term comes on top.",
         hint: "`hit.facing_normal.dot(sun.direction)` is cos θ; clamp it at 0 so that a \
                surface facing away gets no sun. The irradiance is k · brightness · cos θ; a \
                Lambertian surface sends albedo / π of it back (std::f32::consts::PI), and the \
@@ -78,6 +84,8 @@ pub const EXERCISES: [Exercise; 8] = [
         page: "book/src/ch02-shadows.md",
         step: "src/lib.rs",
         flags: &[],
+        nudge: "A point is in shadow when something lies between it and the sun: ask with a ray.",
+        rule: "Cast a feeler from the hit point towards the sun and ask whether anything blocks it; start it a little way off the surface, or rounding makes the surface shadow itself (shadow acne).",
         hint: "The feeler's direction is `surface.scene().sun.direction`, and \
                `surface.trace_shadow_ray(ray)` says whether anything blocks it. Do not start it \
                at `hit.point` itself: rounding puts half of those starts just inside the surface, \
@@ -94,6 +102,8 @@ pub const EXERCISES: [Exercise; 8] = [
         page: "book/src/ch03-reflection.md",
         step: "src/lib.rs",
         flags: &[],
+        nudge: "A mirror sends part of the light on: the tracer traces any ray you hand it, with its share.",
+        rule: "A reflecting surface (r > 0) sends one Reflection ray of share r along the mirror direction, normalised and started epsilon off the surface.",
         hint: "`hit.material.reflection()` is r. `raylab::optics::reflect(d, n)` mirrors the \
                ray's direction about `hit.facing_normal`; normalise it, start the new ray \
                `surface.epsilon()` along it, and hand it to \
@@ -109,6 +119,8 @@ pub const EXERCISES: [Exercise; 8] = [
         page: "book/src/ch04-refraction.md",
         step: "src/lib.rs",
         flags: &[],
+        nudge: "Glass sends its transmitted share on, bent at the surface or, past the critical angle, reflected back inside.",
+        rule: "eta is n₁/n₂, the side the ray comes from over the side it goes into: 1/ior going in, ior coming out. Where refract finds no direction, the share goes along the mirror direction as a total internal reflection; every new ray starts epsilon along itself.",
         hint: "`hit.material.transmission()` is t and `hit.material.ior()` the index. Going in \
                (`hit.entering`) eta is 1/ior, coming out it is ior. \
                `raylab::optics::refract(d, hit.facing_normal, eta)` gives `None` past the \
@@ -126,6 +138,8 @@ pub const EXERCISES: [Exercise; 8] = [
         page: "book/src/ch05-antialiasing.md",
         step: "src/lib.rs",
         flags: &[],
+        nudge: "Five rays per pixel: its centre and the middle of each of its four quarters.",
+        rule: "Offsets go from the pixel's top-left corner, the pixel 1 wide and 1 high, y down: the quarters' middles are 0.25 and 0.75 in. Their order matters to the last bit of the sum.",
         hint: "Offsets are measured from the pixel's top-left corner, with the pixel 1 wide and \
                1 high, x to the right and y down. The centre is (0.5, 0.5); each quarter is \
                0.5 wide, so its middle is 0.25 in from its sides: x and y are each 0.25 or \
@@ -142,6 +156,8 @@ pub const EXERCISES: [Exercise; 8] = [
         page: "book/src/ch06-path-tracing.md",
         step: "src/integrator.rs",
         flags: CHAPTER_6_FLAGS,
+        nudge: "A path picks one lobe at each bounce, at random, as often as that lobe's share of the light.",
+        rule: "The shares are the mirror's r and the refraction's t (or s·F and s·(1 − F) with Fresnel), the rest diffuse; cut [0, 1) into those lengths and see where u falls. A surface that neither reflects nor transmits is diffuse.",
         hint: "A surface that neither reflects nor transmits (r + t = 0) is diffuse, whatever u \
                is. Otherwise the shares are (mirror, refraction) = (r, t), or, with \
                `Materials::Fresnel` on a material that transmits, (s·F, s·(1 − F)) with s = r + t \
@@ -160,6 +176,8 @@ pub const EXERCISES: [Exercise; 8] = [
         page: "book/src/ch06-path-tracing.md",
         step: "src/integrator.rs",
         flags: CHAPTER_6_FLAGS,
+        nudge: "A diffuse bounce should send more paths near the normal, in proportion to cos θ.",
+        rule: "The density is cos θ/π: a uniform point on the unit disc, lifted straight up onto the hemisphere, has it. The direction is built in the normal's frame and is a unit vector.",
         hint: "The density cos θ/π is what a uniform point on the unit disc becomes when it is \
                lifted straight up onto the hemisphere (Malley's method): draw x, y uniform in \
                [−1, 1) with `random.uniform()` until x² + y² < 1, then z = √(1 − x² − y²). Or \
@@ -177,6 +195,8 @@ pub const EXERCISES: [Exercise; 8] = [
         page: "book/src/ch06-path-tracing.md",
         step: "src/integrator.rs",
         flags: CHAPTER_6_FLAGS,
+        nudge: "Rather than wait for a path to hit the sun by chance, ask the sun directly at every diffuse hit.",
+        rule: "The sun's light is the BRDF (albedo / π) times its irradiance times cos θ, when a shadow ray, started off the surface, reaches it; none when the sun is behind the surface.",
         hint: "`self.sun.draw(random)` is the direction to the sun (a point of its disc with \
                `--sun-size`); cos θ = `hit.facing_normal.dot(it)`. At or below 0 the sun is behind \
                the surface: Vec3::ZERO, and no ray. Otherwise count the shadow ray (`*rays += 1`), \

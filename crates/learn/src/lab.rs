@@ -10,7 +10,7 @@
 //! is compiled for the exercises once, and each check recompiles only the
 //! learner's few lines.
 
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
@@ -301,6 +301,15 @@ impl Lab {
         Ok(())
     }
 
+    /// Record that `learn hint` gave level `level` of exercise `name`.
+    pub fn record_hint(&self, name: &str, level: u8) -> Result<(), LabError> {
+        let mut progress = self.progress();
+        if progress.hints.insert(name.to_owned(), level) != Some(level) {
+            self.save_progress(&progress)?;
+        }
+        Ok(())
+    }
+
     /// Record that the core exercise `name` passed its check.
     pub fn record_core_pass(&self, name: &str) -> Result<(), LabError> {
         let mut progress = self.progress();
@@ -314,7 +323,7 @@ impl Lab {
         let text = toml::to_string(progress).expect("sets of numbers and names serialise");
         let text = format!(
             "# Chapters (`passed`), their named exercises (`named`) and core exercises\n\
-             # (`core`) whose check passed\n\
+             # (`core`) whose check passed, and the last level of hint asked for (`hints`)\n\
              # (`cargo run -p learn -- list`).\n{text}"
         );
         write_atomically(&self.progress_path(), &text)
@@ -348,6 +357,9 @@ pub struct Progress {
     /// The core exercises passed, by name.
     #[serde(default)]
     pub core: BTreeSet<String>,
+    /// The last level of hint (1 to 3) `learn hint` gave, by exercise.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub hints: BTreeMap<String, u8>,
 }
 
 pub(crate) fn read(path: &Path) -> Result<String, LabError> {

@@ -16,6 +16,7 @@ pub mod core;
 pub mod core_lab;
 pub mod exercise;
 pub mod lab;
+pub mod mistakes;
 pub mod noisy;
 pub mod path;
 pub mod regions;

@@ -33,10 +33,20 @@ enum Command {
     Check { exercise: String },
     /// Check an exercise again every time you save, until Ctrl-C
     Watch { exercise: String },
-    /// What to do in an exercise, and how
-    Hint { exercise: String },
+    /// A hint, one level at a time: 1 a nudge (what to think about), 2 the
+    /// rule (what the code must do), 3 the recipe (how). Without LEVEL, the
+    /// level after the last one you asked for
+    Hint {
+        exercise: String,
+        #[arg(value_parser = clap::value_parser!(u8).range(1..=3))]
+        level: Option<u8>,
+    },
     /// Every exercise, in order, and how far you are
     List,
+    /// The known mistakes of an exercise: what each is, what it does to the
+    /// picture, where the book explains it, and (once a check has learnt
+    /// it) which tests it fails. A failed check names the one it matches
+    Mistakes { exercise: String },
 }
 
 /// Why the command could not run: one line, exit code 2.
@@ -96,15 +106,31 @@ fn run(cli: Cli) -> Result<ExitCode, ExitCode> {
             learn::watch::watch(&lab, item, &mut out).map_err(|_| ExitCode::from(2))?;
             Ok(ExitCode::SUCCESS)
         }
-        Command::Hint { exercise } => {
+        Command::Hint { exercise, level } => {
             let item = find(&exercise)?;
-            let _ = writeln!(out, "{}: {}", item.title(), item.hint());
-            let page = match item {
-                Item::Core(_) => learn::core::PAGE,
-                Item::Chapter(chapter) => chapter.page,
-                Item::Shader => shader::PAGE,
-            };
-            if item == Item::Shader {
+            let name = item.name();
+            let last = lab.progress().hints.get(&name).copied().unwrap_or(0);
+            let level = level.unwrap_or((last + 1).min(3));
+            const LEVELS: [&str; 3] = ["a nudge", "the rule", "the recipe"];
+            let text = item.hints()[usize::from(level - 1)];
+            let _ = writeln!(
+                out,
+                "{}, hint {level} of 3 ({}): {text}",
+                item.title(),
+                LEVELS[usize::from(level - 1)]
+            );
+            if let Err(error) = lab.record_hint(&name, level.max(last)) {
+                let _ = writeln!(out, "learn: could not record the hint: {error}");
+            }
+            let page = item.page();
+            if level < 3 {
+                let _ = writeln!(
+                    out,
+                    "More: `cargo run -p learn -- hint {name}` gives {} (hint {}); the book: {page}",
+                    LEVELS[usize::from(level)],
+                    level + 1
+                );
+            } else if item == Item::Shader {
                 let _ = writeln!(
                     out,
                     "The check asks naga whether the shader compiles, then renders it 160×120 \
@@ -124,6 +150,52 @@ fn run(cli: Cli) -> Result<ExitCode, ExitCode> {
             }
             Ok(ExitCode::SUCCESS)
         }
+        Command::Mistakes { exercise } => {
+            let item = find(&exercise)?;
+            let name = item.name();
+            let mistakes: Vec<_> = learn::mistakes::of(&name).collect();
+            if mistakes.is_empty() {
+                let _ = writeln!(out, "No mistakes of `{name}` are catalogued yet.");
+                return Ok(ExitCode::SUCCESS);
+            }
+            let cache = learn::mistakes::mistake_lab(&lab).dir.join("fingerprints");
+            // The tests by their titles, as the reference's sources give them.
+            let src = match item {
+                Item::Chapter(chapter) => lab.root.join(chapter.dir).join("src"),
+                _ => lab.root.join("src"),
+            };
+            let titles = learn::run::test_titles(&src);
+            let title = |name: &str| {
+                learn::run::title_of(&titles, name).unwrap_or_else(|| learn::run::sentence(name))
+            };
+            let _ = writeln!(out, "The known mistakes of `{name}`, {}:", item.title());
+            for m in mistakes {
+                let _ = writeln!(out, "  {} — {}", m.slug, m.what);
+                let _ = writeln!(out, "      the picture: {}", m.picture);
+                let _ = writeln!(out, "      the book: {}", m.section);
+                let print: Option<learn::mistakes::Fingerprint> =
+                    std::fs::read_to_string(cache.join(format!("{}-{}.toml", m.exercise, m.slug)))
+                        .ok()
+                        .and_then(|text| toml::from_str(&text).ok());
+                if let Some(print) = print {
+                    let seen = if !print.failing.is_empty() {
+                        let tests: Vec<String> = print.failing.iter().map(|t| title(t)).collect();
+                        format!("fails {}", tests.join("; "))
+                    } else if print.image.is_some() {
+                        "passes the tests; its picture differs".to_owned()
+                    } else {
+                        print.verdict.clone()
+                    };
+                    let _ = writeln!(out, "      the check: {seen}");
+                }
+            }
+            let _ = writeln!(
+                out,
+                "A failed `check {name}` names the one whose failing tests (or, where the tests \
+                 pass, whose picture) match yours: `Likely mistake: SLUG`."
+            );
+            Ok(ExitCode::SUCCESS)
+        }
         Command::List => {
             let progress = lab.progress();
             let _ = writeln!(
@@ -132,6 +204,10 @@ fn run(cli: Cli) -> Result<ExitCode, ExitCode> {
                  caster given (start at `1`):"
             );
             let mut passed = 0;
+            let width = path::items()
+                .map(|i| i.title().chars().count())
+                .max()
+                .unwrap_or(0);
             for item in path::items() {
                 let state = if item.passed(&progress) {
                     passed += 1;
@@ -141,7 +217,12 @@ fn run(cli: Cli) -> Result<ExitCode, ExitCode> {
                 } else {
                     "not started"
                 };
-                let _ = writeln!(out, "  {:<8} {:<52} {state}", item.name(), item.title());
+                let _ = writeln!(
+                    out,
+                    "  {:<8} {:<width$}  {state}",
+                    item.name(),
+                    item.title()
+                );
             }
             let _ = writeln!(
                 out,

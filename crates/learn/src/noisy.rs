@@ -81,9 +81,9 @@ pub fn read_render(dir: &Path) -> Result<NoisyImage, String> {
     })
 }
 
-/// The reference chapter 6 at the check's size and `flags`, traced eight
-/// paths at a time by chapter 8 (chapter 6's bytes, sooner), once per run
-/// of `learn`: `watch` and the author checks ask for it again and again.
+/// The reference chapter 6 at the check's size and `flags`, traced by
+/// chapter 6's own renderer, once per run of `learn`: `watch` and the
+/// author checks ask for it again and again.
 pub fn reference(args: Vec<String>) -> Arc<NoisyImage> {
     static MADE: Mutex<Vec<(Vec<String>, Arc<NoisyImage>)>> = Mutex::new(Vec::new());
     let mut made = MADE.lock().unwrap_or_else(|e| e.into_inner());
@@ -96,7 +96,7 @@ pub fn reference(args: Vec<String>) -> Arc<NoisyImage> {
     let settings =
         ch06_path_tracing::run::settings(&options, &flags).expect("the check's size is allowed");
     let rendered =
-        ch08_eight_paths::render_eight(&Scene::lab(), &Camera::lab(), &settings, &NoProgress);
+        ch06_path_tracing::render_paths(&Scene::lab(), &Camera::lab(), &settings, &NoProgress);
     let image = Arc::new(NoisyImage {
         image: rendered.image,
         variance: rendered.variance,

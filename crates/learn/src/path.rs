@@ -46,6 +46,31 @@ pub fn items() -> impl Iterator<Item = Item> {
     PATH.iter().filter_map(|name| find(name))
 }
 
+/// The exercise to do after `name`: the first after it on the path that
+/// is not passed yet.
+pub fn next_after(name: &str, progress: &Progress) -> Option<Item> {
+    items()
+        .skip_while(|item| item.name() != name)
+        .skip(1)
+        .find(|item| !item.passed(progress))
+}
+
+/// The line a pass ends with: the next exercise and the command that
+/// starts it, or the end of the path.
+pub fn next_line(name: &str, progress: &Progress) -> String {
+    match next_after(name, progress) {
+        Some(item) => format!(
+            "Next: `{}`, {}: cargo run -p learn -- start {}",
+            item.name(),
+            item.title(),
+            item.name()
+        ),
+        None => "That was the last exercise not yet passed: the whole path is done \
+                 (`cargo run -p learn -- list`)."
+            .to_owned(),
+    }
+}
+
 /// The names, as the error messages list them.
 pub fn names() -> String {
     PATH.join(", ")
@@ -70,11 +95,22 @@ impl Item {
         }
     }
 
-    pub fn hint(&self) -> &'static str {
+    /// Its hints, in the order `learn hint` gives them: a nudge (what to
+    /// think about), the rule (what the code must do), the recipe (how).
+    pub fn hints(&self) -> [&'static str; 3] {
         match self {
-            Item::Core(core) => core.hint,
-            Item::Chapter(chapter) => chapter.hint,
-            Item::Shader => shader::HINT,
+            Item::Core(core) => [core.nudge, core.rule, core.hint],
+            Item::Chapter(chapter) => [chapter.nudge, chapter.rule, chapter.hint],
+            Item::Shader => [shader::NUDGE, shader::RULE, shader::HINT],
+        }
+    }
+
+    /// The book's page for it, from the workspace's root.
+    pub fn page(&self) -> &'static str {
+        match self {
+            Item::Core(_) => crate::core::PAGE,
+            Item::Chapter(chapter) => chapter.page,
+            Item::Shader => shader::PAGE,
         }
     }
 
@@ -103,6 +139,31 @@ mod tests {
     use super::*;
     use crate::core::CORE_EXERCISES;
     use crate::exercise::EXERCISES;
+
+    #[test]
+    fn after_a_pass_the_next_exercise_is_the_first_later_one_not_passed() {
+        let mut progress = Progress::default();
+        assert_eq!(
+            next_after("ray", &progress).map(|i| i.name()),
+            Some("camera".into())
+        );
+        progress.core.insert("camera".into());
+        assert_eq!(
+            next_after("ray", &progress).map(|i| i.name()),
+            Some("sphere".into())
+        );
+        assert_eq!(next_after("shader", &progress), None);
+        assert!(next_line("sky", &progress).ends_with("cargo run -p learn -- start 1"));
+    }
+
+    #[test]
+    fn every_exercise_has_three_levels_of_hint_each_one_line() {
+        for item in items() {
+            for hint in item.hints() {
+                assert!(!hint.is_empty() && !hint.contains("  ") && !hint.contains('\n'));
+            }
+        }
+    }
 
     #[test]
     fn the_path_holds_every_exercise_once() {

@@ -111,7 +111,10 @@ pub fn built_from_messages(stdout: &str) -> Built {
 /// One test of the step, as the harness reported it.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct TestResult {
-    /// The test's name as a sentence: `tests::a_b_c` → "a b c".
+    /// The test's full name, as the harness gives it: `tests::a_b_c`.
+    pub name: String,
+    /// The test's name as a sentence: `tests::a_b_c` → "a b c", or its
+    /// title (see [`test_titles`]).
     pub sentence: String,
     pub passed: bool,
     /// Why it failed: the panic's message.
@@ -137,6 +140,7 @@ pub fn parse_test_output(stdout: &str) -> Vec<TestResult> {
         results.push((
             name.to_owned(),
             TestResult {
+                name: name.to_owned(),
                 sentence: sentence(name),
                 passed,
                 message: None,
@@ -155,6 +159,73 @@ pub fn parse_test_output(stdout: &str) -> Vec<TestResult> {
 pub fn sentence(name: &str) -> String {
     let last = name.rsplit("::").next().unwrap_or(name);
     last.replace('_', " ")
+}
+
+/// The most a failure's message shows: about three lines of a terminal.
+pub const MESSAGE_CHARS: usize = 320;
+
+/// `message` cut to [`MESSAGE_CHARS`], at a character boundary, with "…"
+/// where it was cut: a test that prints a whole ray log shows its start.
+pub fn shortened(message: &str) -> String {
+    match message.char_indices().nth(MESSAGE_CHARS) {
+        Some((at, _)) => format!("{} …", &message[..at]),
+        None => message.to_owned(),
+    }
+}
+
+/// A test's title: a one-line doc comment just above its `#[test]`,
+/// shown instead of its function name's words where those lose what a
+/// name cannot spell ("tan 22.5°", not "tan 22 5 degrees"). Read from the
+/// `.rs` files under `src`: `(module path, function, title)`.
+pub fn test_titles(src: &Path) -> Vec<(String, String, String)> {
+    let mut titles = Vec::new();
+    let files = crate::lab::rust_files(src, Path::new("")).unwrap_or_default();
+    for file in files {
+        let Ok(text) = std::fs::read_to_string(src.join(&file)) else {
+            continue;
+        };
+        let module = file
+            .with_extension("")
+            .to_string_lossy()
+            .replace(['/', '\\'], "::");
+        let module = match module.as_str() {
+            "lib" | "main" => String::new(),
+            other => other.strip_suffix("::mod").unwrap_or(other).to_owned(),
+        };
+        let lines: Vec<&str> = text.lines().map(str::trim).collect();
+        for (n, line) in lines.iter().enumerate() {
+            let Some(rest) = line.strip_prefix("fn ") else {
+                continue;
+            };
+            let Some(name) = rest.split('(').next() else {
+                continue;
+            };
+            // Up past the attributes to the doc comment.
+            let mut above = n;
+            let mut tested = false;
+            while above > 0 && lines[above - 1].starts_with("#[") {
+                tested |= lines[above - 1] == "#[test]";
+                above -= 1;
+            }
+            let is_doc = |i: usize| lines[i].starts_with("///");
+            if tested && above > 0 && is_doc(above - 1) && (above < 2 || !is_doc(above - 2)) {
+                let title = lines[above - 1].trim_start_matches('/').trim();
+                titles.push((module.clone(), name.to_owned(), title.to_owned()));
+            }
+        }
+    }
+    titles
+}
+
+/// The title of the test the harness calls `name` (`camera::tests::x`,
+/// or `tests::x` in a chapter's crate), if it has one.
+pub fn title_of(titles: &[(String, String, String)], name: &str) -> Option<String> {
+    let function = name.rsplit("::").next()?;
+    titles
+        .iter()
+        .filter(|(_, f, _)| f == function)
+        .find(|(module, ..)| module.is_empty() || name.starts_with(&format!("{module}::")))
+        .map(|(.., title)| title.clone())
 }
 
 /// The panic message of test `name`, from its section of the output.
@@ -237,6 +308,36 @@ test result: FAILED. 1 passed; 1 failed; 0 ignored; 0 measured; 0 filtered out; 
             results[1].message.as_deref(),
             Some("not yet implemented: Cast a feeler ray.")
         );
+    }
+
+    #[test]
+    fn a_test_with_a_one_line_doc_comment_is_shown_by_it() {
+        let dir = tempfile::tempdir().unwrap();
+        let source = "#[cfg(test)]\nmod tests {\n    /// tan 22.5°, in f32\n    #[test]\n    \
+                      fn tan_22_5_degrees() {}\n\n    /// Two lines of doc:\n    /// not a title.\n    \
+                      #[test]\n    fn two_lines() {}\n}\n";
+        std::fs::write(dir.path().join("camera.rs"), source).unwrap();
+        let titles = test_titles(dir.path());
+        let title = |name| title_of(&titles, name);
+        assert_eq!(
+            title("camera::tests::tan_22_5_degrees").as_deref(),
+            Some("tan 22.5°, in f32")
+        );
+        assert_eq!(title("camera::tests::two_lines"), None);
+        assert_eq!(
+            title("sphere::tests::tan_22_5_degrees"),
+            None,
+            "another module's"
+        );
+    }
+
+    #[test]
+    fn a_long_message_is_cut_to_a_few_lines() {
+        let log = "TracedRay { kind: Primary, depth: 1 }, ".repeat(80);
+        let short = shortened(&log);
+        assert_eq!(short.chars().count(), MESSAGE_CHARS + 2);
+        assert!(short.ends_with(" …"));
+        assert_eq!(shortened("left: 1 right: 0"), "left: 1 right: 0");
     }
 
     #[test]

@@ -36,7 +36,16 @@ pub const PAGE: &str = "book/src/ch10-gpu.md";
 /// What the learner writes, for `learn list`.
 pub const TITLE: &str = "the shader's feeler, reflection and refraction";
 
-/// What to do, for `learn hint`.
+/// `learn hint`'s first level: a nudge.
+pub const NUDGE: &str = "The shader's three gaps are the CPU chapters' three steps, in WGSL: the \
+     feeler (chapter 2), the reflection push (chapter 3) and the refraction push (chapter 4).";
+
+/// Its second: the rules.
+pub const RULE: &str = "Every new ray starts `params.epsilon` along its direction; a push's \
+     weight is its share alone (`push` multiplies in the parent's); eta is 1/ior going in and ior \
+     coming out, and WGSL's `refract` returns all zeros past the critical angle.";
+
+/// Its third: what to do (the recipe), for `learn hint`.
 pub const HINT: &str = "Three regions of `trace_ray` in my-lab/ch10/src/tracer.wgsl, each a \
      `// TODO:` where the lab's code was: as handed out the shader compiles and renders, with no \
      shadows (no feeler), and mirror and glass showing only their own colour (no push). The \

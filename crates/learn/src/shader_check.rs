@@ -1,10 +1,13 @@
 //! `learn check shader`: does the learner's shader compile, and does it
 //! render chapters 2, 3 and 4 as those chapters do?
 //!
-//! naga (the WGSL compiler inside wgpu) parses and validates the file
-//! first, in this process, as chapter 10 does before it looks for a GPU:
-//! a mistake is one line with its line and column. Then the workspace's
-//! own `ch10-gpu` renders it, `--shader` the learner's file, once per
+//! Everything here runs the workspace's own `ch10-gpu` program, built the
+//! first time the learner checks the shader: the GPU stack (wgpu, naga)
+//! is that program's, never `learn`'s, so that `learn` and every other
+//! exercise build without it. The program asks naga (the WGSL compiler
+//! inside wgpu) to parse and validate the file before it looks for a GPU,
+//! so a mistake is one line with its line and column, on any machine.
+//! Then it renders the shader, `--shader` the learner's file, once per
 //! [`STAGES`], each in a process of its own under the render's time limit
 //! (a shader that never ends is stopped, as a chapter's step is).
 //!
@@ -16,13 +19,14 @@
 //! would only ever judge the learner against a copy of the same code.
 
 use std::io::Write;
-use std::path::Path;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
 
-use ch10_gpu::shader::Source;
-
-use crate::check::{Builds, Limits, Picture, Verdict, cargo_build, render_and_compare, size_flags};
+use crate::check::{
+    Builds, Limits, Picture, Verdict, cargo_build, render_and_compare, size_flags, took,
+};
 use crate::lab::Lab;
-use crate::run::shown;
+use crate::run::{panic_message, run_with_limit, shown};
 use crate::shader::{CHAPTER, NAME, PACKAGE, PAGE, STAGES, Stage};
 
 /// The words of chapter 10's error when it finds no GPU adapter.
@@ -50,20 +54,14 @@ fn check_steps(lab: &Lab, limits: Limits, out: &mut dyn Write) -> Verdict {
     }
     let _ = writeln!(out, "chapter {CHAPTER}'s shader, {name}:");
 
-    let text = match std::fs::read_to_string(&file) {
-        Ok(text) => text,
-        Err(e) => return Verdict::Broken(format!("cannot read {name}: {e}")),
-    };
-    if let Err(error) = ch10_gpu::shader::check(&Source { name, text }) {
-        let _ = writeln!(out, "  ✗ it does not compile: {error}");
-        return Verdict::DoesNotCompile;
-    }
-    let _ = writeln!(out, "  ✓ it compiles (naga parses and validates it)");
-
     let program = match build_program(lab, out) {
         Ok(program) => program,
         Err(verdict) => return verdict,
     };
+    if let Err(verdict) = validate(lab, &program, &here, limits, out) {
+        return verdict;
+    }
+    let _ = writeln!(out, "  ✓ it compiles (naga parses and validates it)");
     for stage in &STAGES {
         let verdict = render_stage(lab, stage, &program, &here, limits, out);
         if !verdict.passed() {
@@ -89,11 +87,13 @@ fn check_steps(lab: &Lab, limits: Limits, out: &mut dyn Write) -> Verdict {
     if let Err(error) = lab.record_pass(CHAPTER) {
         let _ = writeln!(out, "learn: could not record the pass: {error}");
     }
+    let _ = writeln!(out, "{}", crate::path::next_line(NAME, &lab.progress()));
     Verdict::Passed
 }
 
 /// The workspace's `ch10-gpu`, built into the lab's target folder: the
-/// first check links it, later ones find it up to date.
+/// first check compiles it, and the GPU stack under it; later ones find it
+/// up to date.
 ///
 /// It is chosen by `--bin` alone, not `-p`: cargo then turns on the
 /// libraries' features as a build of the whole workspace does, and uses
@@ -101,16 +101,14 @@ fn check_steps(lab: &Lab, limits: Limits, out: &mut dyn Write) -> Verdict {
 /// `tempfile`, whose features the tests' own dependencies change, and the
 /// few crates above it are compiled again). `-p ch10-gpu` would choose
 /// features for ch10-gpu's tree alone, and compile the GPU stack again.
-fn build_program(lab: &Lab, out: &mut dyn Write) -> Result<std::path::PathBuf, Verdict> {
+fn build_program(lab: &Lab, out: &mut dyn Write) -> Result<PathBuf, Verdict> {
     let binary = format!("{PACKAGE}{}", std::env::consts::EXE_SUFFIX);
-    if !lab.target.join("debug").join(&binary).exists() {
-        let _ = writeln!(
-            out,
-            "  building {PACKAGE} for the first time (seconds where the workspace is built; \
-             later checks only run it) …"
-        );
+    let first = !lab.target.join("debug").join(&binary).exists();
+    if first {
+        let _ = writeln!(out, "  {}", GPU_BUILD_NOTE);
         let _ = out.flush();
     }
+    let start = Instant::now();
     let built = cargo_build(
         &lab.root.join("Cargo.toml"),
         &lab.target,
@@ -126,9 +124,66 @@ fn build_program(lab: &Lab, out: &mut dyn Write) -> Result<std::path::PathBuf, V
         )),
         other => other,
     })?;
+    if first {
+        took(start, out);
+    }
     built
         .program
         .ok_or_else(|| Verdict::Broken(format!("the build made no {PACKAGE}")))
+}
+
+/// What the first shader check says before it builds the program.
+pub const GPU_BUILD_NOTE: &str = "building ch10-gpu, the program that compiles and runs your \
+     shader, with the GPU stack under it (wgpu, naga, ash and the crates below them) for the \
+     first time: several minutes on a 2-core machine; later checks only run it …";
+
+/// Ask the program whether the shader compiles: it parses and validates
+/// the file before it looks for a GPU, and says where a mistake is as
+/// `FILE:LINE:COLUMN: what`. A one-pixel render, so that a shader that
+/// compiles costs next to nothing more; a machine with no GPU adapter is
+/// left to the first stage to report.
+fn validate(
+    lab: &Lab,
+    program: &Path,
+    here: &Path,
+    limits: Limits,
+    out: &mut dyn Write,
+) -> Result<(), Verdict> {
+    let file = lab.shader_file();
+    let mut command = std::process::Command::new(program);
+    command
+        .arg(format!("--shader={}", file.display()))
+        .arg(format!("--like={}", STAGES[0].package))
+        .args(["--width=1", "--height=1", "--quiet", "--no-diagrams"])
+        .arg(format!(
+            "--out={}",
+            lab.shader_check_dir().join("compile").display()
+        ))
+        .env("RUST_BACKTRACE", "0");
+    let output = run_with_limit(command, limits.render)
+        .map_err(|e| Verdict::Broken(format!("cannot run {}: {e}", program.display())))?;
+    if output.success() || output.timed_out() {
+        return Ok(());
+    }
+    let why = panic_message(&output.stderr)
+        .unwrap_or_else(|| output.stderr.lines().last().unwrap_or("").to_owned());
+    let why = why
+        .split_once(": error: ")
+        .map_or(why.as_str(), |(_, rest)| rest);
+    let at_file = format!("{}:", file.display());
+    if let Some(rest) = why.strip_prefix(&at_file) {
+        let _ = writeln!(
+            out,
+            "  ✗ it does not compile: {}:{rest}",
+            shown(&file, here)
+        );
+        return Err(Verdict::DoesNotCompile);
+    }
+    if why.starts_with("cannot read shader") {
+        let _ = writeln!(out, "  ✗ {why}");
+        return Err(Verdict::DoesNotCompile);
+    }
+    Ok(())
 }
 
 /// Render the shader like one chapter and compare it with that chapter.

@@ -186,7 +186,7 @@ const FIRST: [Wrong; 9] = [
         file: "optics.rs",
         from: "d - 2.0 * d.dot(n) * n",
         to: "d - d.dot(n) * n",
-        caught_by: "✗ reflecting at 45 degrees turns down into up",
+        caught_by: "✗ reflecting at 45° turns down into up",
         saying: "",
     },
     Wrong {
@@ -253,7 +253,7 @@ const SECOND: [Wrong; 5] = [
         file: "trace.rs",
         from: "weight: pending.weight * secondary.share,",
         to: "weight: secondary.share,",
-        caught_by: "✗ each bounce carries its parents weight times its share",
+        caught_by: "✗ each bounce carries its parent's weight times its share",
         saying: "Vec3A(1.0, 1.0, 1.0)",
     },
 ];

@@ -109,6 +109,7 @@ fn every_exercise_fails_its_check_at_its_tests_and_every_solution_passes() {
         let (verdict, text) = check_quietly(&lab, exercise);
         assert_eq!(verdict, Verdict::Passed, "{exercise}'s solution:\n{text}");
         assert!(text.contains("The reference solution is"), "{text}");
+        assert!(!text.contains("Likely mistake"), "{text}");
     }
     let progress = lab.progress();
     assert_eq!(

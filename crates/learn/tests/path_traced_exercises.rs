@@ -96,6 +96,7 @@ fn assert_passes(lab: &Lab, exercise: &Exercise) {
     println!("{text}");
     assert_eq!(verdict, Verdict::Passed, "{text}");
     assert!(text.contains("within the two renders' own noise"), "{text}");
+    assert!(!text.contains("Likely mistake"), "{text}");
 }
 
 /// Chapter 6's lobe choice with the shares of `(mirror, refraction)` cut
