@@ -64,6 +64,7 @@ pub fn fresnel(cos_i: f32, eta: f32) -> f32 {
 mod tests {
     use super::*;
 
+    // ANCHOR: reflect_tests
     #[test]
     fn reflecting_at_45_degrees_turns_down_into_up() {
         let d = Vec3::new(1.0, -1.0, 0.0);
@@ -74,6 +75,9 @@ mod tests {
     fn reflecting_head_on_sends_the_ray_back() {
         assert_eq!(reflect(Vec3::NEG_Z, Vec3::Z), Vec3::Z);
     }
+    // ANCHOR_END: reflect_tests
+
+    // ANCHOR: refract_tests
 
     #[test]
     fn refracting_head_on_does_not_bend() {
@@ -110,6 +114,7 @@ mod tests {
         let (s, c) = 41.5f32.to_radians().sin_cos();
         assert!(refract(Vec3::new(s, c, 0.0), Vec3::NEG_Y, 1.5).is_some());
     }
+    // ANCHOR_END: refract_tests
 
     #[test]
     fn glass_reflects_four_percent_head_on() {
