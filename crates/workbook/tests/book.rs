@@ -255,3 +255,21 @@ fn copy_tree(from: &Path, to: &Path) {
         }
     }
 }
+
+/// Each ray-tree figure's paragraph, alt text and caption name the pixel
+/// and the numbers of the probe the chapter's program prints at the
+/// book's size (the main job checks the same against the files it wrote).
+#[test]
+fn the_text_around_every_ray_tree_agrees_with_its_probe() {
+    let src = book_dir().join("src");
+    let mut passages = 0;
+    for page in pages(&src) {
+        let text = std::fs::read_to_string(&page).unwrap();
+        passages += workbook::claims::passages(&text).len();
+    }
+    assert!(passages >= 6, "the chapters' ray trees: {passages}");
+    let wrong = workbook::claims::check_pages(&src, |dir| {
+        workbook::claims::chapter_probe_text(dir, Size::DEFAULT).map(|text| text.unwrap())
+    });
+    assert!(wrong.is_empty(), "\n{}", wrong.join("\n"));
+}
