@@ -64,6 +64,7 @@ pub fn fresnel(cos_i: f32, eta: f32) -> f32 {
 mod tests {
     use super::*;
 
+    // ANCHOR: reflect_tests
     /// reflecting at 45° turns down into up
     #[test]
     fn reflecting_at_45_degrees_turns_down_into_up() {
@@ -75,6 +76,9 @@ mod tests {
     fn reflecting_head_on_sends_the_ray_back() {
         assert_eq!(reflect(Vec3::NEG_Z, Vec3::Z), Vec3::Z);
     }
+    // ANCHOR_END: reflect_tests
+
+    // ANCHOR: refract_tests
 
     #[test]
     fn refracting_head_on_does_not_bend() {
@@ -113,6 +117,7 @@ mod tests {
         let (s, c) = 41.5f32.to_radians().sin_cos();
         assert!(refract(Vec3::new(s, c, 0.0), Vec3::NEG_Y, 1.5).is_some());
     }
+    // ANCHOR_END: refract_tests
 
     /// glass reflects 4 % head on
     #[test]

@@ -97,9 +97,88 @@ pub fn pages(src: &Path) -> Vec<PathBuf> {
     pages
 }
 
+/// The longest listing a chapter's main text may show unfolded: a reader
+/// takes in about a screen of code at once; a longer one goes in a
+/// `<details>` fold or an appendix.
+pub const LISTING_LINES: usize = 40;
+
+/// Every code listing (`<pre>`) of a built page that is longer than `limit`
+/// lines and not inside a `<details>` fold: its length and first line.
+pub fn unfolded_listings_over(html: &str, limit: usize) -> Vec<(usize, String)> {
+    let mut long = Vec::new();
+    let mut folds = 0usize;
+    let mut rest = html;
+    loop {
+        let next = ["<details", "</details>", "<pre"]
+            .into_iter()
+            .filter_map(|tag| rest.find(tag).map(|at| (at, tag)))
+            .min();
+        let Some((at, tag)) = next else {
+            break;
+        };
+        rest = &rest[at + tag.len()..];
+        match tag {
+            "<details" => folds += 1,
+            "</details>" => folds = folds.saturating_sub(1),
+            _ => {
+                let end = rest.find("</pre>").unwrap_or(rest.len());
+                let code = text_of(&rest[..end]);
+                rest = &rest[end..];
+                let code = code.trim_end_matches('\n');
+                let lines = code.lines().count();
+                if folds == 0 && lines > limit {
+                    let first = code.lines().find(|l| !l.trim().is_empty()).unwrap_or("");
+                    long.push((lines, first.trim().to_owned()));
+                }
+            }
+        }
+    }
+    long
+}
+
+/// The text of an HTML fragment: its tags dropped (the first `>` ends the
+/// `<pre>`'s own attributes), its entities left as they are.
+fn text_of(fragment: &str) -> String {
+    let fragment = fragment.split_once('>').map_or(fragment, |(_, body)| body);
+    let mut text = String::with_capacity(fragment.len());
+    let mut in_tag = false;
+    for c in fragment.chars() {
+        match c {
+            '<' => in_tag = true,
+            '>' if in_tag => in_tag = false,
+            _ if !in_tag => text.push(c),
+            _ => {}
+        }
+    }
+    text
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_long_listing_counts_only_outside_a_fold() {
+        let code = |n: usize| {
+            let lines: Vec<String> = (0..n).map(|i| format!("let x{i} = {i};")).collect();
+            format!(
+                "<pre><code class=\"language-rust\"><span>{}</span>\n</code></pre>",
+                lines.join("\n")
+            )
+        };
+        let page = format!(
+            "<p>a</p>{}<details><summary>s</summary>{}</details>{}",
+            code(41),
+            code(90),
+            code(40)
+        );
+        assert_eq!(
+            unfolded_listings_over(&page, LISTING_LINES),
+            [(41, "let x0 = 0;".to_owned())]
+        );
+        let nested = format!("<details><details></details>{}</details>", code(60));
+        assert!(unfolded_listings_over(&nested, LISTING_LINES).is_empty());
+    }
 
     #[test]
     fn an_anchor_gives_the_lines_between_its_markers() {

@@ -4,6 +4,7 @@
 
 pub mod antialiasing;
 pub mod book;
+pub mod claims;
 pub mod concepts;
 pub mod extras;
 pub mod gpu_speed;

@@ -6,7 +6,7 @@
 use std::path::Path;
 use std::process::{Command, ExitCode};
 
-use workbook::{JobError, Size, book, make_figures};
+use workbook::{JobError, Size, book, claims, make_figures};
 
 fn run() -> Result<(), JobError> {
     let book_dir = Path::new("book");
@@ -16,6 +16,18 @@ fn run() -> Result<(), JobError> {
         Size::DEFAULT,
         false,
     )?;
+    // The hand-written text around each ray-tree figure agrees with the
+    // probe.txt it was made with, before the book is built from both.
+    let figures = book_dir.join("src/figures");
+    let wrong = claims::check_pages(&book_dir.join("src"), |dir| {
+        std::fs::read_to_string(figures.join(dir).join("probe.txt")).ok()
+    });
+    if !wrong.is_empty() {
+        return Err(JobError::Book(format!(
+            "a page disagrees with its probe:\n  {}",
+            wrong.join("\n  ")
+        )));
+    }
     let index = book::build(book_dir)?;
     println!(
         "book: open {} (or run `mdbook serve book`)",

@@ -4,7 +4,9 @@
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
-use workbook::book::{anchored, build, includes, links, pages};
+use workbook::book::{
+    LISTING_LINES, anchored, build, includes, links, pages, unfolded_listings_over,
+};
 use workbook::{Size, make_figures};
 
 fn book_dir() -> PathBuf {
@@ -159,6 +161,31 @@ fn the_book_builds_and_shows_only_figures_the_programs_make() {
     let ch4 = std::fs::read_to_string(book.join("build/ch04-refraction.html")).unwrap();
     assert!(ch4.contains("send_refraction"), "chapter 4 shows its code");
     every_formula_is_mathml_and_no_page_needs_mathjax(&src, &book.join("build"));
+    no_chapter_shows_a_long_listing_unfolded(&src, &book.join("build"));
+}
+
+/// A chapter's main text (the built page, every include resolved) shows
+/// no listing longer than `LISTING_LINES` outside a `<details>` fold.
+fn no_chapter_shows_a_long_listing_unfolded(src: &Path, build: &Path) {
+    let mut chapters = 0;
+    let mut long = Vec::new();
+    for page in pages(src) {
+        let name = page.file_stem().unwrap().to_string_lossy().into_owned();
+        if !name.starts_with("ch") {
+            continue;
+        }
+        chapters += 1;
+        let html = std::fs::read_to_string(build.join(format!("{name}.html"))).unwrap();
+        for (lines, first) in unfolded_listings_over(&html, LISTING_LINES) {
+            long.push(format!("{name}: {lines} lines, from `{first}`"));
+        }
+    }
+    assert_eq!(chapters, 10, "the ten chapters' pages");
+    assert!(
+        long.is_empty(),
+        "listings longer than {LISTING_LINES} lines outside a fold:\n{}",
+        long.join("\n")
+    );
 }
 
 /// The book reads offline: each page that writes a formula holds MathML,
@@ -254,4 +281,22 @@ fn copy_tree(from: &Path, to: &Path) {
             std::fs::copy(&path, to.join(entry.file_name())).unwrap();
         }
     }
+}
+
+/// Each ray-tree figure's paragraph, alt text and caption name the pixel
+/// and the numbers of the probe the chapter's program prints at the
+/// book's size (the main job checks the same against the files it wrote).
+#[test]
+fn the_text_around_every_ray_tree_agrees_with_its_probe() {
+    let src = book_dir().join("src");
+    let mut passages = 0;
+    for page in pages(&src) {
+        let text = std::fs::read_to_string(&page).unwrap();
+        passages += workbook::claims::passages(&text).len();
+    }
+    assert!(passages >= 6, "the chapters' ray trees: {passages}");
+    let wrong = workbook::claims::check_pages(&src, |dir| {
+        workbook::claims::chapter_probe_text(dir, Size::DEFAULT).map(|text| text.unwrap())
+    });
+    assert!(wrong.is_empty(), "\n{}", wrong.join("\n"));
 }
