@@ -438,7 +438,7 @@ fn check_core_steps(
             exercise.chapter,
             exercise.name,
             exercise.files.join(", "),
-            crate::core::PAGE,
+            exercise.page(),
         );
         if let Err(error) = lab.record_core_pass(exercise.name) {
             let _ = writeln!(out, "learn: could not record the pass: {error}");

@@ -1,5 +1,5 @@
-//! The core as exercises: the track before chapter 1, in which a learner
-//! writes the tracer the chapters stand on (`src/`), from the point along
+//! The core as exercises: the track beside chapters 1, 3 and 4, in which a
+//! learner writes the tracer the chapters stand on (`src/`), from the point along
 //! a ray to the ray stack.
 //!
 //! Each exercise is one or more regions of the real core, marked as the
@@ -7,9 +7,6 @@
 //! `// ANCHOR_END: todo_NAME`), judged first by the core's own unit tests
 //! of those regions and then by a picture: a chapter rendered with the
 //! learner's core (see [`crate::core_lab`]) against the reference.
-
-/// The book's page for the core track, from the workspace's root.
-pub const PAGE: &str = "book/src/core-exercises.md";
 
 /// One exercise of the core track.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -34,6 +31,19 @@ pub struct CoreExercise {
     pub rule: &'static str,
     /// Its third: what to do, in a few lines (the recipe).
     pub hint: &'static str,
+}
+
+impl CoreExercise {
+    /// The chapter whose "Do it yourself" teaches it: the first that needs
+    /// it, which for the stack is chapter 3 (mirrors), though its check
+    /// renders chapter 4, the first to send two rays from one hit.
+    pub fn page(&self) -> &'static str {
+        match self.name {
+            "reflect" | "stack" => "book/src/ch03-reflection.md",
+            "refract" => "book/src/ch04-refraction.md",
+            _ => "book/src/ch01-ray-casting.md",
+        }
+    }
 }
 
 /// The core track, in the order the book takes it.

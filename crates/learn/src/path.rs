@@ -108,7 +108,7 @@ impl Item {
     /// The book's page for it, from the workspace's root.
     pub fn page(&self) -> &'static str {
         match self {
-            Item::Core(_) => crate::core::PAGE,
+            Item::Core(core) => core.page(),
             Item::Chapter(chapter) => chapter.page,
             Item::Shader => shader::PAGE,
         }
