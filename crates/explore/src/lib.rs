@@ -39,14 +39,19 @@
 //! and the book's screenshots drive the same state the window does,
 //! without a screen.
 
+pub mod compose;
 pub mod driver;
+pub mod error;
 pub mod figures;
 pub mod gpu;
 pub mod input;
 pub mod knobs;
+pub mod live;
 pub mod measure;
 pub mod orbit;
 pub mod overlay;
+pub mod probe;
+pub mod render;
 pub mod save;
 pub mod script;
 pub mod source;
@@ -54,7 +59,9 @@ pub mod state;
 pub mod tree3d;
 pub mod watch;
 pub mod window;
+pub mod worker;
 
+pub use error::ExploreError;
 pub use input::{Button, Input, Key};
 pub use source::Loaded;
 pub use state::Explorer;
