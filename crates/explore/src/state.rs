@@ -510,11 +510,12 @@ impl Explorer {
     }
 
     /// Take a rendered frame, unless the view has changed since its job
-    /// was asked for; whether it was taken. A new reason why there is no
-    /// GPU half is printed in the terminal too, where it is not cut to
-    /// the window's width.
+    /// was asked for, or a frame for this view was taken since (`w`
+    /// renders a still frame here and now); whether it was taken. A new
+    /// reason why there is no GPU half is printed in the terminal too,
+    /// where it is not cut to the window's width.
     pub fn take(&mut self, frame: Frame) -> bool {
-        if frame.generation != self.generation {
+        if frame.generation != self.generation || self.asked != Some(frame.generation) {
             return false;
         }
         self.asked = None;
