@@ -7,7 +7,8 @@
 //! chapter, rays per pixel, depth and epsilon, and the two are compared
 //! with the lab model's tolerance, the one the golden images are held to.
 //!
-//! The device is made on the first frame that asks for it and kept: the
+//! The device is made on the first frame that asks for it and kept by
+//! the renderer ([`GpuHalf`], on the render worker in the window): the
 //! explorer starts without looking for a GPU, and runs where there is
 //! none. Whatever stops the comparison (no adapter, path tracing, a
 //! pattern the shader refuses) is one line for the overlay, never a panic.

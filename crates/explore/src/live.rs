@@ -106,6 +106,11 @@ impl Live {
         }
     }
 
+    /// The window had nothing to show the frame on (minimised).
+    pub fn skipped(&mut self) {
+        self.fresh = false;
+    }
+
     /// Between events: play the script one turn on, and ask for the next
     /// frame if one is wanted.
     pub fn turn(&mut self) -> Result<Turn, ExploreError> {

@@ -142,7 +142,9 @@ impl App {
         let (Some(width), Some(height)) =
             (NonZeroU32::new(size.width), NonZeroU32::new(size.height))
         else {
-            // Minimised or sized to nothing: there is nothing to draw on.
+            // Minimised or sized to nothing: there is nothing to draw on,
+            // and a script goes on without showing this turn's frame.
+            self.live.skipped();
             return Ok(());
         };
         let fail = ExploreError::Draw;
