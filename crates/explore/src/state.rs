@@ -13,6 +13,7 @@ use std::sync::Arc;
 
 use image::RgbImage;
 use raylab::probe;
+use raylab::sampling::SamplingError;
 use raylab::{Camera, Scene, Vec3};
 use raylab_cli::probe_text::{self, Listing};
 
@@ -437,7 +438,7 @@ impl Explorer {
             match self.cpu_job(moving) {
                 Ok(job) => Some(job),
                 Err(error) => {
-                    self.status = Some(error);
+                    self.status = Some(error.to_string());
                     self.progress = Progress::Done;
                     return None;
                 }
@@ -459,14 +460,11 @@ impl Explorer {
     /// chosen count, in one render, exactly as the chapter renders it. Or
     /// one more path per pixel, averaged into the image; a moving camera
     /// starts the average again.
-    fn cpu_job(&self, moving: bool) -> Result<CpuJob, String> {
+    fn cpu_job(&self, moving: bool) -> Result<CpuJob, SamplingError> {
         if !self.knobs.paths {
             let preview = moving && self.knobs.spp > 1;
             let spp = if preview { 1 } else { self.knobs.spp };
-            let settings = self
-                .knobs
-                .whitted(self.width, self.height, spp)
-                .map_err(|e| e.to_string())?;
+            let settings = self.knobs.whitted(self.width, self.height, spp)?;
             return Ok(CpuJob::Whitted { settings, preview });
         }
         let pixels = (self.width * self.height) as usize;
@@ -476,10 +474,7 @@ impl Explorer {
             }
             _ => (vec![Vec3::ZERO; pixels], 0),
         };
-        let settings = self
-            .knobs
-            .path_pass(self.width, self.height, passes)
-            .map_err(|e| e.to_string())?;
+        let settings = self.knobs.path_pass(self.width, self.height, passes)?;
         Ok(CpuJob::Paths {
             settings,
             sum,
