@@ -7,16 +7,20 @@ use std::time::Duration;
 
 use raylab_cli::output::save_png;
 
+use crate::error::ExploreError;
 use crate::script::Step;
 use crate::state::{Action, Explorer};
 
 /// The most frames `settle` renders: path tracing at 1024 paths per pixel.
-const SETTLE_LIMIT: u32 = 1024;
+pub const SETTLE_LIMIT: u32 = 1024;
 
 /// Whether the script has more to do.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Tick {
     Busy,
+    /// The script waits until the image is what the knobs ask for (at
+    /// most [`SETTLE_LIMIT`] frames): the runner renders until then.
+    Settle,
     Done,
     Quit,
 }
@@ -41,8 +45,9 @@ impl Driver {
         self.steps.is_empty() && self.wait == 0
     }
 
-    /// Run the script up to its next input (one input per frame).
-    pub fn tick(&mut self, explorer: &mut Explorer) -> Result<Tick, String> {
+    /// Run the script up to its next input (one input per frame) or its
+    /// next `settle`.
+    pub fn tick(&mut self, explorer: &mut Explorer) -> Result<Tick, ExploreError> {
         if self.wait > 0 {
             self.wait -= 1;
             return Ok(Tick::Busy);
@@ -61,7 +66,7 @@ impl Driver {
                     self.wait = n - 1;
                     return Ok(Tick::Busy);
                 }
-                Step::Settle => explorer.settle(SETTLE_LIMIT),
+                Step::Settle => return Ok(Tick::Settle),
                 Step::Shot(path) => write_shot(explorer, &path)?,
             }
         }
@@ -70,12 +75,14 @@ impl Driver {
 }
 
 /// Write the frame shown, overlay and all.
-pub fn write_shot(explorer: &Explorer, path: &Path) -> Result<(), String> {
+pub fn write_shot(explorer: &Explorer, path: &Path) -> Result<(), ExploreError> {
     if let Some(folder) = path.parent().filter(|p| !p.as_os_str().is_empty()) {
-        std::fs::create_dir_all(folder)
-            .map_err(|e| format!("cannot write '{}': {e}", path.display()))?;
+        std::fs::create_dir_all(folder).map_err(|source| ExploreError::Write {
+            path: path.to_owned(),
+            source,
+        })?;
     }
-    save_png(&explorer.compose(), path).map_err(|e| e.to_string())
+    Ok(save_png(&explorer.compose(), path)?)
 }
 
 /// Do what an input asked of the runner; whether to quit.
@@ -97,7 +104,7 @@ pub fn act(explorer: &mut Explorer, action: Action, out_dir: &Path) -> bool {
                     ));
                     explorer.say(text);
                 }
-                Err(error) => explorer.set_status(error),
+                Err(error) => explorer.set_status(error.to_string()),
             }
             false
         }
@@ -136,10 +143,14 @@ pub fn run_headless(
     driver: &mut Driver,
     frames: u32,
     screenshot: Option<&Path>,
-) -> Result<String, String> {
+) -> Result<String, ExploreError> {
     let mut times = Vec::new();
     loop {
         let tick = driver.tick(explorer)?;
+        if tick == Tick::Settle {
+            explorer.settle(SETTLE_LIMIT);
+            continue;
+        }
         if explorer.frame() {
             times.push(explorer.stats().frame);
         }

@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 use raylab::probe::ProbeTarget;
 
 use crate::driver::{Driver, run_headless};
+use crate::error::ExploreError;
 use crate::script;
 use crate::source::Loaded;
 use crate::state::Explorer;
@@ -48,9 +49,11 @@ pub fn scripts() -> Vec<(&'static str, String)> {
 }
 
 /// Write the book's screenshots of the explorer into `dir`; the paths written.
-pub fn write_book_figures(dir: &Path) -> Result<Vec<PathBuf>, String> {
-    std::fs::create_dir_all(dir)
-        .map_err(|e| format!("cannot use folder '{}': {e}", dir.display()))?;
+pub fn write_book_figures(dir: &Path) -> Result<Vec<PathBuf>, ExploreError> {
+    std::fs::create_dir_all(dir).map_err(|source| ExploreError::Folder {
+        path: dir.to_owned(),
+        source,
+    })?;
     let mut written = Vec::new();
     for (name, text) in scripts() {
         let path = dir.join(name);

@@ -7,7 +7,8 @@
 //! chapter, rays per pixel, depth and epsilon, and the two are compared
 //! with the lab model's tolerance, the one the golden images are held to.
 //!
-//! The device is made on the first frame that asks for it and kept: the
+//! The device is made on the first frame that asks for it and kept by
+//! the renderer ([`GpuHalf`], on the render worker in the window): the
 //! explorer starts without looking for a GPU, and runs where there is
 //! none. Whatever stops the comparison (no adapter, path tracing, a
 //! pattern the shader refuses) is one line for the overlay, never a panic.
@@ -60,13 +61,13 @@ pub enum Outcome {
     Refused(String),
 }
 
-/// The comparison: whether it is on, the device once made, a compiled
-/// tracer per max depth (the shader's ray stack is sized for it), and
-/// the last outcome.
+/// The comparison as the explorer shows it: whether it is on, the
+/// adapter's name once a device is made, and the last outcome. The device
+/// itself is the renderer's ([`GpuHalf`]), on the thread that renders.
+#[derive(Debug)]
 pub struct Comparison {
     on: bool,
-    device: Option<Result<Gpu, String>>,
-    tracers: HashMap<u32, Tracer>,
+    adapter: Option<String>,
     outcome: Outcome,
 }
 
@@ -74,8 +75,7 @@ impl Default for Comparison {
     fn default() -> Comparison {
         Comparison {
             on: false,
-            device: None,
-            tracers: HashMap::new(),
+            adapter: None,
             outcome: Outcome::Pending,
         }
     }
@@ -120,10 +120,7 @@ impl Comparison {
 
     /// The adapter's name (without its driver), once a device is made.
     pub fn adapter(&self) -> Option<&str> {
-        match &self.device {
-            Some(Ok(gpu)) => gpu.adapter.split(" (").next(),
-            _ => None,
-        }
+        self.adapter.as_deref()
     }
 
     /// No GPU frame, for a reason found outside.
@@ -131,15 +128,40 @@ impl Comparison {
         self.outcome = Outcome::Refused(why);
     }
 
+    /// Take what the renderer's [`GpuHalf`] made of a frame.
+    pub fn take(&mut self, outcome: Outcome, adapter: Option<String>) {
+        self.outcome = outcome;
+        if adapter.is_some() {
+            self.adapter = adapter;
+        }
+    }
+}
+
+/// The renderer's half of the comparison: the device once made, and a
+/// compiled tracer per max depth (the shader's ray stack is sized for it).
+#[derive(Default)]
+pub struct GpuHalf {
+    device: Option<Result<Gpu, String>>,
+    tracers: HashMap<u32, Tracer>,
+}
+
+impl GpuHalf {
+    /// The adapter's name (without its driver), once a device is made.
+    pub fn adapter(&self) -> Option<&str> {
+        match &self.device {
+            Some(Ok(gpu)) => gpu.adapter.split(" (").next(),
+            _ => None,
+        }
+    }
+
     /// Render the view the CPU just rendered, if it is finished, and
-    /// compare; the outcome replaces the last one. A view still on its way
-    /// is only checked for a refusal.
-    pub fn render(&mut self, view: &CpuFrame) {
-        self.outcome = match self.try_render(view) {
+    /// compare. A view still on its way is only checked for a refusal.
+    pub fn render(&mut self, view: &CpuFrame) -> Outcome {
+        match self.try_render(view) {
             Ok(Some(frame)) => Outcome::Frame(frame),
             Ok(None) => Outcome::Pending,
             Err(why) => Outcome::Refused(why),
-        };
+        }
     }
 
     fn try_render(&mut self, view: &CpuFrame) -> Result<Option<GpuFrame>, String> {
@@ -232,8 +254,7 @@ mod tests {
 
     #[test]
     fn path_tracing_and_per_pixel_patterns_are_refused_before_any_device_is_made() {
-        let mut comparison = Comparison::default();
-        comparison.toggle();
+        let mut half = GpuHalf::default();
         let (scene, camera) = (Scene::lab(), Camera::lab());
         let cpu = RgbImage::new(8, 6);
         let knobs = Knobs {
@@ -249,16 +270,18 @@ mod tests {
             cpu: &cpu,
             still: true,
         };
-        comparison.render(&view(&knobs));
-        let why = comparison.refusal().unwrap();
+        let outcome = half.render(&view(&knobs));
+        let Outcome::Refused(why) = outcome else {
+            panic!("{outcome:?}")
+        };
         assert!(
             why.contains("16 rays/px") && why.contains("jittered"),
             "{why}"
         );
         let mut paths = knobs;
         paths.chapter(6);
-        comparison.render(&view(&paths));
-        assert!(comparison.refusal().unwrap().contains("path tracing"));
-        assert!(comparison.device.is_none());
+        let outcome = half.render(&view(&paths));
+        assert!(matches!(&outcome, Outcome::Refused(why) if why.contains("path tracing")));
+        assert!(half.device.is_none());
     }
 }

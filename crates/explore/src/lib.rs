@@ -14,8 +14,10 @@
 //! - [`state`]: the explorer without its window, inputs to frame;
 //! - [`knobs`] and [`orbit`]: what the keys and the mouse change;
 //! - [`tree3d`] and [`overlay`]: what is drawn over the scene;
+//! - [`render`] and [`worker`]: a frame asked for as a job, rendered on a
+//!   thread of its own;
 //! - [`gpu`]: `g`, the GPU's render beside the CPU's;
-//! - [`window`]: the window itself.
+//! - [`live`] and [`window`]: the window's event loop, and the window itself.
 //!
 //! **Why winit and softbuffer.** The frame is made on the CPU, a row per
 //! task, as 8-bit sRGB: all a window has to do is show those pixels and
@@ -38,15 +40,27 @@
 //! [`state::Explorer::compose`]'s image: the tests, the `--script` runs
 //! and the book's screenshots drive the same state the window does,
 //! without a screen.
+//!
+//! **Why a render worker.** A path-traced pass at a large size takes a good
+//! part of a second and a GPU frame on a CPU's Vulkan driver seconds; an
+//! event loop that rendered would leave every key waiting for them. So the
+//! window's loop sends jobs to a thread that owns the renderers and takes
+//! the newest finished frame, the way interactive renderers do; a frame for
+//! a view that has changed since is dropped ([`state::Explorer::take`]).
 
+pub mod compose;
 pub mod driver;
+pub mod error;
 pub mod figures;
 pub mod gpu;
 pub mod input;
 pub mod knobs;
+pub mod live;
 pub mod measure;
 pub mod orbit;
 pub mod overlay;
+pub mod probe;
+pub mod render;
 pub mod save;
 pub mod script;
 pub mod source;
@@ -54,7 +68,9 @@ pub mod state;
 pub mod tree3d;
 pub mod watch;
 pub mod window;
+pub mod worker;
 
+pub use error::ExploreError;
 pub use input::{Button, Input, Key};
 pub use source::Loaded;
 pub use state::Explorer;

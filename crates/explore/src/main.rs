@@ -9,7 +9,7 @@ use raylab_explore::driver::{Driver, run_headless};
 use raylab_explore::source::Loaded;
 use raylab_explore::state::Explorer;
 use raylab_explore::watch::SceneWatch;
-use raylab_explore::{figures, measure, script, window};
+use raylab_explore::{ExploreError, figures, measure, script, window};
 
 /// The lab scene live in a window: chapters 1–6 on keys, an orbit camera,
 /// ray trees in 3D, scene files reloaded on save.
@@ -70,7 +70,7 @@ fn main() -> ExitCode {
     };
     match run(flags) {
         Ok(()) => ExitCode::SUCCESS,
-        Err(error) => fail(&error),
+        Err(error) => fail(&error.to_string()),
     }
 }
 
@@ -79,11 +79,11 @@ fn fail(error: &str) -> ExitCode {
     ExitCode::from(2)
 }
 
-fn load(scene: Option<&PathBuf>) -> Result<Loaded, String> {
+fn load(scene: Option<&PathBuf>) -> Result<Loaded, ExploreError> {
     scene.map_or_else(|| Ok(Loaded::lab()), |path| Loaded::file(path))
 }
 
-fn run(flags: Flags) -> Result<(), String> {
+fn run(flags: Flags) -> Result<(), ExploreError> {
     if let Some(dir) = &flags.figures {
         for path in figures::write_book_figures(dir)? {
             println!("wrote {}", path.display());

@@ -4,6 +4,7 @@ use std::path::{Path, PathBuf};
 
 use raylab_cli::output::{save_png, save_text};
 
+use crate::error::ExploreError;
 use crate::state::Explorer;
 
 /// What a save wrote and how to make it again.
@@ -20,19 +21,21 @@ pub struct Saved {
 /// `explore-NNN.png`, refined first if it is a Whitted preview, and, when
 /// the camera has moved or the scene is a file's, the scene (seen from the
 /// explorer's camera) as `explore-NNN.toml`.
-pub fn save(explorer: &mut Explorer, dir: &Path) -> Result<Saved, String> {
+pub fn save(explorer: &mut Explorer, dir: &Path) -> Result<Saved, ExploreError> {
     if !explorer.knobs.paths {
         // A still frame is the chapter's render; a preview is not.
         explorer.settle(1);
     }
-    std::fs::create_dir_all(dir)
-        .map_err(|e| format!("cannot use folder '{}': {e}", dir.display()))?;
+    std::fs::create_dir_all(dir).map_err(|source| ExploreError::Folder {
+        path: dir.to_owned(),
+        source,
+    })?;
     let name = (1..10_000)
         .map(|n| format!("explore-{n:03}"))
         .find(|n| !dir.join(format!("{n}.png")).exists())
-        .ok_or("there are 9999 saved frames already: choose another folder with --out")?;
+        .ok_or(ExploreError::SavesFull)?;
     let png = dir.join(format!("{name}.png"));
-    save_png(explorer.image(), &png).map_err(|e| e.to_string())?;
+    save_png(explorer.image(), &png)?;
     // The scene goes beside the image whenever it is not the lab's: a
     // scene file may change after the save, and the command must not.
     let text = match explorer.view.orbit() {
@@ -50,7 +53,7 @@ pub fn save(explorer: &mut Explorer, dir: &Path) -> Result<Saved, String> {
     let scene = match text {
         Some(text) => {
             let path = dir.join(format!("{name}.toml"));
-            save_text(&text, &path).map_err(|e| e.to_string())?;
+            save_text(&text, &path)?;
             Some(path)
         }
         None => None,

@@ -20,6 +20,7 @@
 use std::collections::VecDeque;
 use std::path::PathBuf;
 
+use crate::error::ExploreError;
 use crate::input::{Button, Input, Key};
 
 /// Steps of a drag: enough for the orbit to move in a few frames.
@@ -34,12 +35,15 @@ pub enum Step {
 }
 
 /// Parse a script; the error names the word that is wrong.
-pub fn parse(text: &str) -> Result<VecDeque<Step>, String> {
+pub fn parse(text: &str) -> Result<VecDeque<Step>, ExploreError> {
     let mut steps = VecDeque::new();
     for word in text.split_whitespace() {
         let (verb, arg) = word.split_once(':').unwrap_or((word, ""));
-        let bad = |why: &str| format!("--script: '{word}': {why}");
-        let numbers = |n: usize| -> Result<Vec<f64>, String> {
+        let bad = |why: &str| ExploreError::Script {
+            word: word.to_owned(),
+            why: why.to_owned(),
+        };
+        let numbers = |n: usize| -> Result<Vec<f64>, ExploreError> {
             let values: Vec<f64> = arg
                 .split(',')
                 .map(|v| v.trim().parse::<f64>())
@@ -151,9 +155,14 @@ mod tests {
 
     #[test]
     fn a_bad_script_word_is_one_line_naming_it() {
-        let error = parse("key:3 click:10").unwrap_err();
+        let error = parse("key:3 click:10").unwrap_err().to_string();
         assert!(error.contains("'click:10'"), "{error}");
-        assert!(parse("jump").unwrap_err().contains("unknown word"));
+        assert!(
+            parse("jump")
+                .unwrap_err()
+                .to_string()
+                .contains("unknown word")
+        );
         assert!(parse("key:up2").is_err());
         assert!(parse("frames:-1").is_err());
         assert!(parse("click:nan,1").is_err());

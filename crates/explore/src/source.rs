@@ -7,6 +7,8 @@ use std::path::{Path, PathBuf};
 use raylab::{Camera, Scene, Vec3};
 use raylab_cli::scene_file;
 
+use crate::error::ExploreError;
+
 /// The lab scene's file, exactly the lab model's.
 pub const LAB_TOML: &str = include_str!("../../../scenes/lab.toml");
 
@@ -41,10 +43,12 @@ impl Loaded {
     }
 
     /// Read a scene file; the error is one line for the learner.
-    pub fn file(path: &Path) -> Result<Loaded, String> {
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| format!("cannot read scene file '{}': {e}", path.display()))?;
-        let (scene, camera) = scene_file::parse(&text, path).map_err(|e| e.to_string())?;
+    pub fn file(path: &Path) -> Result<Loaded, ExploreError> {
+        let text = std::fs::read_to_string(path).map_err(|source| ExploreError::ReadScene {
+            path: path.to_owned(),
+            source,
+        })?;
+        let (scene, camera) = scene_file::parse(&text, path)?;
         let target = camera_target(&text).unwrap_or(camera.eye + camera.forward() * 4.0);
         Ok(Loaded {
             scene,
@@ -75,11 +79,11 @@ impl Source {
     /// reads to see what the explorer's camera sees. `f32` values written
     /// as `f64` read back to the same `f32`, so the camera is rebuilt to
     /// the bit.
-    pub fn with_camera(&self, eye: Vec3, target: Vec3, fov: f32) -> Result<String, String> {
+    pub fn with_camera(&self, eye: Vec3, target: Vec3, fov: f32) -> Result<String, ExploreError> {
         let mut table: toml::Table = self
             .text
             .parse()
-            .map_err(|e| format!("cannot rewrite the scene: {e}"))?;
+            .map_err(|e: toml::de::Error| ExploreError::Rewrite(e.to_string()))?;
         let vector = |v: Vec3| {
             toml::Value::Array(
                 [v.x, v.y, v.z]
@@ -98,7 +102,7 @@ impl Source {
             "# Written by raylab-explore: the scene as it was, seen from the explorer's camera.\n";
         toml::to_string(&table)
             .map(|body| format!("{header}{body}"))
-            .map_err(|e| format!("cannot rewrite the scene: {e}"))
+            .map_err(|e| ExploreError::Rewrite(e.to_string()))
     }
 }
 

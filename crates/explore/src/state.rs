@@ -2,22 +2,28 @@
 //! and each frame renders what they ask for with the fast floor (chapter
 //! 7's waves, chapter 8's paths). The window, a `--script` and the tests
 //! all drive this one state, so what the tests see is what the window shows.
+//!
+//! A frame is asked for as a [`Job`] and taken as a [`Frame`]
+//! ([`crate::render`]): [`Explorer::frame`] renders the job here and now,
+//! the window hands it to its render worker and takes the frame when it
+//! is ready. Every change to what is rendered counts one more generation,
+//! and a frame of an older generation is dropped.
 
-use std::time::{Duration, Instant};
+use std::sync::Arc;
 
-use ch07_eight_rays::render::render_waves;
-use ch08_eight_paths::render_eight;
 use image::RgbImage;
-use raylab::probe::{self, SampleTree};
-use raylab::srgb::EncodeTable;
-use raylab::{Camera, Keep, NoProgress, Scene, Vec3};
+use raylab::probe;
+use raylab::sampling::SamplingError;
+use raylab::{Camera, Scene, Vec3};
 use raylab_cli::probe_text::{self, Listing};
-use rayon::prelude::*;
 
-use crate::gpu::{Comparison, CpuFrame};
+use crate::gpu::Comparison;
 use crate::input::{Button, Input, Key};
 use crate::knobs::Knobs;
 use crate::orbit::View;
+use crate::probe::Probe;
+pub use crate::render::Stats;
+use crate::render::{CpuJob, Frame, GpuJob, Job, Progress, Render, Renderer};
 use crate::source::{Loaded, Source};
 
 /// Degrees the orbit turns per pixel dragged.
@@ -35,19 +41,6 @@ pub enum Action {
     Quit,
 }
 
-/// How far the current image has come.
-#[derive(Clone, Debug, PartialEq)]
-enum Progress {
-    /// Something changed: the image is out of date.
-    Stale,
-    /// One ray per pixel, drawn while the camera moves.
-    Preview,
-    /// The Whitted frame at the chosen rays per pixel: nothing more to do.
-    Done,
-    /// Path tracing: the sum of every pass's radiance, and the passes.
-    Paths { sum: Vec<Vec3>, passes: u32 },
-}
-
 #[derive(Clone, Copy, Debug)]
 struct Drag {
     button: Button,
@@ -56,38 +49,11 @@ struct Drag {
     moved: bool,
 }
 
-/// A clicked pixel's ray trees, kept in the scene's space so that they
-/// stay put while the camera moves.
-#[derive(Clone, Debug)]
-pub struct Probe {
-    pub pixel: (u32, u32),
-    /// The camera the pixel was clicked through.
-    pub camera: Camera,
-    pub trees: Vec<SampleTree>,
-    /// `raylab_cli::probe_text`'s text of the trees.
-    pub text: String,
-}
-
-/// What the last frame cost.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Stats {
-    /// The whole frame: render, encode (paths) and nothing else.
-    pub frame: Duration,
-    /// Rays traced by the frame, shadow rays included.
-    pub rays: u64,
-}
-
-impl Stats {
-    pub fn mrays_per_second(&self) -> f64 {
-        self.rays as f64 / self.frame.as_secs_f64().max(1e-9) / 1e6
-    }
-}
-
 /// The explorer's state: scene, knobs, camera, and the frame they make.
 pub struct Explorer {
     pub knobs: Knobs,
     pub view: View,
-    scene: Scene,
+    scene: Arc<Scene>,
     source: Source,
     width: u32,
     height: u32,
@@ -107,6 +73,12 @@ pub struct Explorer {
     hidden: bool,
     /// `g`: the same view from chapter 10's shader, beside this one.
     gpu: Comparison,
+    /// How many changes to what is rendered there have been.
+    generation: u64,
+    /// The generation of the last job asked for and not yet taken.
+    asked: Option<u64>,
+    /// The renderer [`Explorer::frame`] renders with, on this thread.
+    renderer: Renderer,
 }
 
 impl Explorer {
@@ -116,7 +88,7 @@ impl Explorer {
         Explorer {
             knobs: Knobs::default(),
             view: View::new(loaded.camera, loaded.target),
-            scene: loaded.scene,
+            scene: Arc::new(loaded.scene),
             source: loaded.source,
             width,
             height,
@@ -131,6 +103,9 @@ impl Explorer {
             stats: Stats::default(),
             hidden: false,
             gpu: Comparison::default(),
+            generation: 0,
+            asked: None,
+            renderer: Renderer::default(),
         }
     }
 
@@ -275,6 +250,7 @@ impl Explorer {
             Key::Char('g') => {
                 // The CPU's image stays: the next frame adds the GPU's.
                 self.gpu.toggle();
+                self.generation += 1;
                 return Action::None;
             }
             Key::Char('?' | 'h') => {
@@ -336,10 +312,12 @@ impl Explorer {
     fn camera_changed(&mut self) {
         self.camera_moved = true;
         self.progress = Progress::Stale;
+        self.generation += 1;
     }
 
     fn knobs_changed(&mut self) {
         self.progress = Progress::Stale;
+        self.generation += 1;
         if let Some(probe) = &self.probe {
             let (pixel, camera) = (probe.pixel, probe.camera);
             self.probe = Some(self.probe_pixel(pixel, camera));
@@ -407,83 +385,156 @@ impl Explorer {
     /// Take the scene from a new load of its file (a save in the editor):
     /// the camera follows the file's unless the learner has moved it.
     pub fn replace_scene(&mut self, loaded: Loaded) {
-        self.scene = loaded.scene;
+        self.scene = Arc::new(loaded.scene);
         self.source = loaded.source;
         self.view.set_home(loaded.camera, loaded.target);
         self.probe = None;
         self.status = None;
         self.progress = Progress::Stale;
+        self.generation += 1;
     }
 
-    /// Render one frame if there is anything new to draw; whether it did.
+    /// Render one frame here and now if there is anything new to draw;
+    /// whether it did.
     pub fn frame(&mut self) -> bool {
+        match self.job() {
+            Some(job) => {
+                let frame = self.renderer.render(job);
+                self.take(frame)
+            }
+            None => false,
+        }
+    }
+
+    /// How many changes to what is rendered there have been.
+    pub fn generation(&self) -> u64 {
+        self.generation
+    }
+
+    /// Whether a job should be asked for: a frame would draw something
+    /// new, and no job for the view as it is now is out.
+    pub fn needs_job(&self) -> bool {
+        self.wants_frame() && self.asked != Some(self.generation)
+    }
+
+    /// Whether a job is out whose frame has not been taken.
+    pub fn is_waiting(&self) -> bool {
+        self.asked.is_some()
+    }
+
+    /// The next frame to render, if there is anything new to draw: the
+    /// view and knobs as they are now. A moving camera's frame is a
+    /// one-ray preview.
+    pub fn job(&mut self) -> Option<Job> {
         if !self.wants_frame() {
+            return None;
+        }
+        let cpu = if self.is_settled() {
+            // Only the GPU's half is missing.
+            None
+        } else {
+            let moving =
+                std::mem::take(&mut self.camera_moved) || self.drag.is_some_and(|d| d.moved);
+            match self.cpu_job(moving) {
+                Ok(job) => Some(job),
+                Err(error) => {
+                    self.status = Some(error.to_string());
+                    self.progress = Progress::Done;
+                    return None;
+                }
+            }
+        };
+        let gpu = self.gpu.is_on().then(|| self.gpu_job(cpu.as_ref()));
+        self.asked = Some(self.generation);
+        Some(Job {
+            generation: self.generation,
+            scene: Arc::clone(&self.scene),
+            camera: self.camera(),
+            knobs: self.knobs,
+            cpu,
+            gpu,
+        })
+    }
+
+    /// A Whitted frame: one ray per pixel while the camera moves, else the
+    /// chosen count, in one render, exactly as the chapter renders it. Or
+    /// one more path per pixel, averaged into the image; a moving camera
+    /// starts the average again.
+    fn cpu_job(&self, moving: bool) -> Result<CpuJob, SamplingError> {
+        if !self.knobs.paths {
+            let preview = moving && self.knobs.spp > 1;
+            let spp = if preview { 1 } else { self.knobs.spp };
+            let settings = self.knobs.whitted(self.width, self.height, spp)?;
+            return Ok(CpuJob::Whitted { settings, preview });
+        }
+        let pixels = (self.width * self.height) as usize;
+        let (sum, passes) = match &self.progress {
+            Progress::Paths { sum, passes } if !moving && sum.len() == pixels => {
+                (sum.clone(), *passes)
+            }
+            _ => (vec![Vec3::ZERO; pixels], 0),
+        };
+        let settings = self.knobs.path_pass(self.width, self.height, passes)?;
+        Ok(CpuJob::Paths {
+            settings,
+            sum,
+            passes,
+        })
+    }
+
+    /// With `g` on, the frame the CPU's part leaves rendered again by
+    /// chapter 10's shader, with the same settings. A GPU frame takes
+    /// seconds on a CPU's Vulkan driver: it is rendered for the finished
+    /// view, not for every preview and refinement on the way.
+    fn gpu_job(&self, cpu: Option<&CpuJob>) -> GpuJob {
+        let (done, still) = match cpu {
+            Some(CpuJob::Whitted { preview, .. }) => {
+                (if *preview { 1 } else { self.knobs.spp }, !preview)
+            }
+            Some(CpuJob::Paths { passes, .. }) => (passes + 1, passes + 1 >= self.knobs.spp),
+            None => (self.samples().0, self.is_settled()),
+        };
+        GpuJob {
+            settings: self
+                .knobs
+                .whitted(self.width, self.height, done.max(1))
+                .map_err(|error| format!("no GPU half: {error}")),
+            still,
+            cpu: cpu.is_none().then(|| self.image.clone()),
+        }
+    }
+
+    /// Take a rendered frame, unless the view has changed since its job
+    /// was asked for, or a frame for this view was taken since (`w`
+    /// renders a still frame here and now); whether it was taken. A new
+    /// reason why there is no GPU half is printed in the terminal too,
+    /// where it is not cut to the window's width.
+    pub fn take(&mut self, frame: Frame) -> bool {
+        if frame.generation != self.generation || self.asked != Some(frame.generation) {
             return false;
         }
-        if self.is_settled() {
-            // Only the GPU's half is missing.
-            self.compare_on_gpu();
-            return true;
+        self.asked = None;
+        if let Some(cpu) = frame.cpu {
+            self.image = cpu.image;
+            self.progress = cpu.progress;
+            self.stats = cpu.stats;
         }
-        let moving = std::mem::take(&mut self.camera_moved) || self.drag.is_some_and(|d| d.moved);
-        let start = Instant::now();
-        let rays = if self.knobs.paths {
-            self.path_pass(moving)
-        } else {
-            self.whitted(moving)
-        };
-        match rays {
-            Ok(rays) => {
-                self.stats = Stats {
-                    frame: start.elapsed(),
-                    rays,
-                };
-                self.compare_on_gpu();
-                true
-            }
-            Err(error) => {
-                self.status = Some(error);
-                self.progress = Progress::Done;
-                false
+        if let Some((outcome, adapter)) = frame.gpu {
+            let before = self.gpu.refusal().map(str::to_owned);
+            self.gpu.take(outcome, adapter);
+            if let Some(why) = self.gpu.refusal()
+                && before.as_deref() != Some(why)
+            {
+                self.messages.push(why.to_owned());
             }
         }
-    }
-
-    /// With `g` on, the frame just rendered again by chapter 10's shader,
-    /// with the same settings. A new reason why it cannot be is printed in
-    /// the terminal too, where it is not cut to the window's width.
-    fn compare_on_gpu(&mut self) {
-        if !self.gpu.is_on() {
-            return;
-        }
-        let before = self.gpu.refusal().map(str::to_owned);
-        let camera = self.camera();
-        let (done, _) = self.samples();
-        match self.knobs.whitted(self.width, self.height, done.max(1)) {
-            // A GPU frame takes seconds on a CPU's Vulkan driver: it is
-            // rendered for the finished view, not for every preview and
-            // refinement on the way, so the window stays live.
-            Ok(settings) => self.gpu.render(&CpuFrame {
-                scene: &self.scene,
-                camera: &camera,
-                knobs: &self.knobs,
-                settings: &settings,
-                cpu: &self.image,
-                still: self.is_settled(),
-            }),
-            Err(error) => self.gpu.refuse(format!("no GPU half: {error}")),
-        }
-        if let Some(why) = self.gpu.refusal()
-            && before.as_deref() != Some(why)
-        {
-            self.messages.push(why.to_owned());
-        }
+        true
     }
 
     /// Render until the image is what the knobs ask for (at most `limit`
     /// frames): a still frame.
     pub fn settle(&mut self, limit: u32) {
-        self.camera_moved = false;
+        self.hold_still();
         for _ in 0..limit {
             if !self.frame() {
                 break;
@@ -491,84 +542,8 @@ impl Explorer {
         }
     }
 
-    /// A Whitted frame: one ray per pixel while the camera moves, else the
-    /// chosen count, in one render, exactly as the chapter renders it.
-    fn whitted(&mut self, moving: bool) -> Result<u64, String> {
-        let preview = moving && self.knobs.spp > 1;
-        let spp = if preview { 1 } else { self.knobs.spp };
-        let settings = self
-            .knobs
-            .whitted(self.width, self.height, spp)
-            .map_err(|e| e.to_string())?;
-        let step = self.knobs.step();
-        let rendered = render_waves(
-            &self.scene,
-            &self.camera(),
-            &step,
-            &settings,
-            Keep::IMAGE,
-            &NoProgress,
-        );
-        self.image = rendered.srgb;
-        self.progress = if preview {
-            Progress::Preview
-        } else {
-            Progress::Done
-        };
-        Ok(rendered.counts.total())
-    }
-
-    /// One more path per pixel, averaged into the image; a moving camera
-    /// starts the average again.
-    fn path_pass(&mut self, moving: bool) -> Result<u64, String> {
-        let pixels = (self.width * self.height) as usize;
-        let (mut sum, passes) = match std::mem::replace(&mut self.progress, Progress::Stale) {
-            Progress::Paths { sum, passes } if !moving && sum.len() == pixels => (sum, passes),
-            _ => (vec![Vec3::ZERO; pixels], 0),
-        };
-        let settings = self
-            .knobs
-            .path_pass(self.width, self.height, passes)
-            .map_err(|e| e.to_string())?;
-        let render = render_eight(&self.scene, &self.camera(), &settings, &NoProgress);
-        let passes = passes + 1;
-        let scale = 1.0 / passes as f32;
-        let table = EncodeTable::get();
-        sum.par_iter_mut()
-            .zip(render.image.pixels().par_iter())
-            .zip(self.image.par_chunks_mut(3))
-            .for_each(|((total, &new), out)| {
-                *total += new;
-                // One pass is chapter 8's own image: `x * 1.0` is `x`.
-                out.copy_from_slice(&table.encode_rgb(*total * scale));
-            });
-        self.progress = Progress::Paths { sum, passes };
-        Ok(render.rays)
-    }
-
-    /// The scene as the window shows it, without the overlay: the image,
-    /// or with `g` on, its left half beside the GPU's right half.
-    pub fn scene_frame(&self) -> RgbImage {
-        match self.gpu.frame(self.image.dimensions()) {
-            Some(gpu) => crate::gpu::split(&self.image, &gpu.image),
-            None => self.image.clone(),
-        }
-    }
-
-    /// The frame the window shows: the scene, the clicked pixel's ray
-    /// tree in 3D, and the overlay.
-    pub fn compose(&self) -> RgbImage {
-        let mut frame = self.scene_frame();
-        crate::overlay::draw_seam(&mut frame, self);
-        let Some(probe) = &self.probe else {
-            crate::overlay::draw_on(&mut frame, self);
-            return frame;
-        };
-        // The tree may cross the whole frame: draw everything on a canvas.
-        let mut canvas = raylab_plot::Canvas::new(self.width, self.height, [0, 0, 0]);
-        canvas.draw_rgb_image(&frame, 0, 0, 1);
-        crate::tree3d::draw(&mut canvas, &self.camera(), probe);
-        crate::overlay::draw(&mut canvas, self);
-        canvas.to_rgb_image()
+    /// The camera is still from now on: the next frame is not a preview.
+    pub fn hold_still(&mut self) {
+        self.camera_moved = false;
     }
 }

@@ -8,7 +8,7 @@ use raylab::{Camera, RayKind, Vec3};
 use raylab_cli::diagrams::kind_colour;
 use raylab_plot::Canvas;
 
-use crate::state::Probe;
+use crate::probe::Probe;
 
 /// How far a ray that escapes to the sky is drawn, in scene units (the
 /// ray-tree diagram's stub).

@@ -7,6 +7,7 @@ use std::time::Duration;
 
 use raylab_cli::saves::{Saves, Watched};
 
+use crate::error::ExploreError;
 use crate::source::Loaded;
 use crate::state::Explorer;
 
@@ -18,9 +19,9 @@ pub struct SceneWatch {
 }
 
 impl SceneWatch {
-    pub fn new(path: &Path) -> Result<SceneWatch, String> {
-        let saves = Saves::new(vec![Watched::File(path.to_owned())])
-            .map_err(|e| format!("cannot watch the scene file: {e}"))?;
+    pub fn new(path: &Path) -> Result<SceneWatch, ExploreError> {
+        let saves =
+            Saves::new(vec![Watched::File(path.to_owned())]).map_err(ExploreError::Watch)?;
         Ok(SceneWatch {
             path: path.to_owned(),
             saves,

@@ -1,6 +1,6 @@
-//! The window: winit's events into the explorer's inputs, the explorer's
-//! frames onto the screen through softbuffer, and the scene file's watch
-//! and the script polled between frames.
+//! The window: winit's events into the explorer's inputs, the render
+//! worker's frames onto the screen through softbuffer, and the scene
+//! file's watch and the script polled between events ([`crate::live`]).
 
 use std::num::NonZeroU32;
 use std::path::PathBuf;
@@ -15,10 +15,14 @@ use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
 use winit::keyboard::{Key as WinitKey, NamedKey};
 use winit::window::{Window, WindowId};
 
-use crate::driver::{Driver, Tick, act, frame_summary, print_messages, write_shot};
+use crate::driver::{Driver, frame_summary, write_shot};
+use crate::error::ExploreError;
 use crate::input::{Button, Input, Key};
+use crate::live::{Live, Turn};
+use crate::render::Renderer;
 use crate::state::Explorer;
 use crate::watch::SceneWatch;
+use crate::worker::Worker;
 
 /// How often an idle explorer wakes to look at the scene file.
 const IDLE_WAKE: Duration = Duration::from_millis(50);
@@ -35,98 +39,102 @@ pub struct Run {
     pub screenshot: Option<PathBuf>,
 }
 
+/// A frame is ready on the render worker: the event loop wakes for it.
+struct FrameReady;
+
 struct App {
-    explorer: Explorer,
-    run: Run,
+    live: Live,
+    watch: Option<SceneWatch>,
+    screenshot: Option<PathBuf>,
     window: Option<(Rc<Window>, Surface)>,
     pointer: (f64, f64),
-    shown: u32,
     /// The frame last put on the screen.
     last: Option<RgbImage>,
-    times: Vec<Duration>,
-    error: Option<String>,
+    error: Option<ExploreError>,
     redraw: bool,
 }
 
 /// Open the window and run until it is closed; the error is one line.
-pub fn run(explorer: Explorer, run: Run) -> Result<String, String> {
+pub fn run(explorer: Explorer, run: Run) -> Result<String, ExploreError> {
     if std::env::var_os("DISPLAY").is_none_or(|d| d.is_empty()) {
-        return Err(
-            "no display: DISPLAY is not set (run it on a desktop, under xvfb-run, or with --headless)"
-                .into(),
-        );
+        return Err(ExploreError::NoDisplay);
     }
-    let event_loop = EventLoop::new().map_err(|e| {
-        // winit's message starts with the source line it came from.
-        let text = e.to_string();
-        let reason = text.rsplit(": ").next().unwrap_or(&text).to_owned();
-        let display = std::env::var("DISPLAY").unwrap_or_default();
-        format!("cannot open the display '{display}': {reason}")
+    let event_loop = EventLoop::<FrameReady>::with_user_event()
+        .build()
+        .map_err(|e| {
+            // winit's message starts with the source line it came from.
+            let text = e.to_string();
+            let reason = text.rsplit(": ").next().unwrap_or(&text).to_owned();
+            let display = std::env::var("DISPLAY").unwrap_or_default();
+            ExploreError::Display { display, reason }
+        })?;
+    let proxy = event_loop.create_proxy();
+    let worker = Worker::spawn(Renderer::default(), move || {
+        // The loop is gone once the window has closed: nothing to wake.
+        let _ = proxy.send_event(FrameReady);
     })?;
     let mut app = App {
-        explorer,
-        run,
+        live: Live::new(explorer, run.driver, worker, run.frames),
+        watch: run.watch,
+        screenshot: run.screenshot,
         window: None,
         pointer: (0.0, 0.0),
-        shown: 0,
         last: None,
-        times: Vec::new(),
         error: None,
         redraw: true,
     };
     event_loop
         .run_app(&mut app)
-        .map_err(|e| format!("the window's event loop failed: {e}"))?;
+        .map_err(ExploreError::EventLoop)?;
     if let Some(error) = app.error {
         return Err(error);
     }
-    if let (Some(path), Some(frame)) = (&app.run.screenshot, &app.last) {
-        raylab_cli::output::save_png(frame, path).map_err(|e| e.to_string())?;
-    } else if let Some(path) = &app.run.screenshot {
-        write_shot(&app.explorer, path)?;
+    if let (Some(path), Some(frame)) = (&app.screenshot, &app.last) {
+        raylab_cli::output::save_png(frame, path)?;
+    } else if let Some(path) = &app.screenshot {
+        write_shot(&app.live.explorer, path)?;
     }
     Ok(format!(
         "{}, {} shown",
-        frame_summary(&app.times),
-        app.shown
+        frame_summary(&app.live.times),
+        app.live.shown
     ))
 }
 
 impl App {
-    fn open(&mut self, event_loop: &ActiveEventLoop) -> Result<(), String> {
-        let (width, height) = self.explorer.size();
+    fn open(&mut self, event_loop: &ActiveEventLoop) -> Result<(), ExploreError> {
+        let (width, height) = self.live.explorer.size();
         let attributes = Window::default_attributes()
             .with_title("raylab explorer")
             .with_inner_size(PhysicalSize::new(width, height));
         let window = Rc::new(
             event_loop
                 .create_window(attributes)
-                .map_err(|e| format!("cannot open a window: {e}"))?,
+                .map_err(ExploreError::Window)?,
         );
-        let context = softbuffer::Context::new(Rc::clone(&window))
-            .map_err(|e| format!("cannot draw into the window: {e}"))?;
-        let surface = softbuffer::Surface::new(&context, Rc::clone(&window))
-            .map_err(|e| format!("cannot draw into the window: {e}"))?;
+        let context = softbuffer::Context::new(Rc::clone(&window)).map_err(ExploreError::Draw)?;
+        let surface =
+            softbuffer::Surface::new(&context, Rc::clone(&window)).map_err(ExploreError::Draw)?;
         self.window = Some((window, surface));
         Ok(())
     }
 
-    fn fail(&mut self, event_loop: &ActiveEventLoop, error: String) {
+    fn fail(&mut self, event_loop: &ActiveEventLoop, error: ExploreError) {
         self.error = Some(error);
         event_loop.exit();
     }
 
+    /// An input is answered at once: the state changes now, and the frame
+    /// for it follows from the worker.
     fn input(&mut self, event_loop: &ActiveEventLoop, input: Input) {
-        let action = self.explorer.handle(input);
-        if act(&mut self.explorer, action, &self.run.driver.out_dir) {
+        if self.live.input(input) {
             event_loop.exit();
         }
-        print_messages(&mut self.explorer);
         self.redraw = true;
     }
 
     /// Put the explorer's frame on the screen.
-    fn present(&mut self) -> Result<(), String> {
+    fn present(&mut self) -> Result<(), ExploreError> {
         let Some((window, surface)) = &mut self.window else {
             return Ok(());
         };
@@ -134,12 +142,14 @@ impl App {
         let (Some(width), Some(height)) =
             (NonZeroU32::new(size.width), NonZeroU32::new(size.height))
         else {
-            // Minimised or sized to nothing: there is nothing to draw on.
+            // Minimised or sized to nothing: there is nothing to draw on,
+            // and a script goes on without showing this turn's frame.
+            self.live.skipped();
             return Ok(());
         };
-        let fail = |e: softbuffer::SoftBufferError| format!("cannot draw into the window: {e}");
+        let fail = ExploreError::Draw;
         surface.resize(width, height).map_err(fail)?;
-        let frame = self.explorer.compose();
+        let frame = self.live.explorer.compose();
         let mut buffer = surface.buffer_mut().map_err(fail)?;
         let pack =
             |p: &image::Rgb<u8>| u32::from(p[0]) << 16 | u32::from(p[1]) << 8 | u32::from(p[2]);
@@ -159,7 +169,7 @@ impl App {
         }
         buffer.present().map_err(fail)?;
         self.last = Some(frame);
-        self.shown += 1;
+        self.live.presented();
         Ok(())
     }
 }
@@ -177,7 +187,7 @@ fn key_of(key: &WinitKey) -> Option<Key> {
     })
 }
 
-impl ApplicationHandler for App {
+impl ApplicationHandler<FrameReady> for App {
     fn resumed(&mut self, event_loop: &ActiveEventLoop) {
         if self.window.is_none()
             && let Err(error) = self.open(event_loop)
@@ -240,41 +250,32 @@ impl ApplicationHandler for App {
         }
     }
 
+    fn user_event(&mut self, _: &ActiveEventLoop, _: FrameReady) {
+        self.redraw |= self.live.frame_ready();
+    }
+
     fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
-        if let Some(watch) = &mut self.run.watch
-            && watch.poll(&mut self.explorer)
+        if let Some(watch) = &mut self.watch
+            && watch.poll(&mut self.live.explorer)
         {
             self.redraw = true;
         }
-        if !self.run.driver.is_done() {
-            match self.run.driver.tick(&mut self.explorer) {
-                Ok(Tick::Quit) => event_loop.exit(),
-                Ok(_) => {}
-                Err(error) => return self.fail(event_loop, error),
-            }
-            print_messages(&mut self.explorer);
-            self.redraw = true;
+        let turn = match self.live.turn() {
+            Ok(turn) => turn,
+            Err(error) => return self.fail(event_loop, error),
+        };
+        if turn == Turn::Quit {
+            return event_loop.exit();
         }
-        if self.explorer.frame() {
-            self.times.push(self.explorer.stats().frame);
-            print_messages(&mut self.explorer);
-            self.redraw = true;
-        }
-        // A counted run shows a frame every turn, so that it ends.
-        self.redraw |= self.run.frames.is_some();
+        self.redraw |= turn == Turn::Redraw;
         if let Some((window, _)) = &self.window
             && std::mem::take(&mut self.redraw)
         {
             window.request_redraw();
         }
-        let done = self.run.driver.is_done();
-        if done && self.run.frames.is_some_and(|n| self.shown >= n) {
-            event_loop.exit();
-        }
-        let busy = self.explorer.wants_frame()
-            || !done
-            || self.run.watch.as_ref().is_some_and(|w| w.pending())
-            || self.run.frames.is_some();
+        // The worker wakes the loop when a frame is ready; the file watch
+        // is looked at every IDLE_WAKE.
+        let busy = turn == Turn::Redraw || self.watch.as_ref().is_some_and(|w| w.pending());
         event_loop.set_control_flow(if busy {
             ControlFlow::Poll
         } else {
