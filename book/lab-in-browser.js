@@ -558,17 +558,21 @@
 
     var generation = 0;
     function check() {
-      var mine = ++generation, text = edit.area.value;
+      var mine = ++generation, text = edit.area.value, began = performance.now();
+      var took = function () { box.dataset.ms = (performance.now() - began).toFixed(0); };
       box.dataset.state = "checking";
       verdict.textContent = "Checking …";
       var stale = function () { return mine !== generation; };
       return onGpu(function () {
         if (stale()) return;
-        var depths = LAB.stages.map(function (s) { return s.maxDepth; });
-        return Promise.all(depths.map(function (d) { return compile(text, d); })).then(function (tracers) {
+        // One compile for the four pictures, its stack sized for the
+        // deepest: a stack deeper than a render needs leaves its picture
+        // as it is, and chapter 10 renders a shallower depth on it too.
+        var deepest = Math.max.apply(null, LAB.stages.map(function (s) { return s.maxDepth; }));
+        return compile(text, deepest).then(function (tracer) {
           if (stale()) return;
           messages.textContent = "";
-          var errors = tracers.filter(function (t) { return t.errors; });
+          var errors = tracer.errors ? [tracer] : [];
           if (errors.length) {
             pictures.hidden = true;
             rows.forEach(function (row, i) { row.textContent = "· " + LAB.stages[i].label + ": " + LAB.stages[i].task; });
@@ -578,25 +582,27 @@
               link.addEventListener("click", function (event) { event.preventDefault(); goTo(edit.area, e.line, e.column); });
               messages.appendChild(element("li", {}, [link]));
             });
+            took();
             box.dataset.state = "compile-error";
             box.dataset.line = String(errors[0].errors[0].line);
             box.dataset.column = String(errors[0].errors[0].column);
             box.dataset.stage = "";
             return;
           }
-          return stage(0, tracers);
+          return stage(0, tracer);
         });
       }).catch(function (error) {
         verdict.textContent = "The check failed: " + error.message;
         box.dataset.state = "error";
       });
 
-      function stage(i, tracers) {
+      function stage(i, tracer) {
         if (stale()) return;
         if (i === LAB.stages.length) {
           pictures.hidden = true;
           verdict.textContent = "✓ Done: the shader passes all " + LAB.stages.length +
             " pictures, as `cargo run -p learn -- check shader` would pass it.";
+          took();
           box.dataset.state = "passed";
           box.dataset.stage = "";
           return;
@@ -604,25 +610,29 @@
         var s = LAB.stages[i];
         var settings = { width: LAB.check.width, height: LAB.check.height, maxDepth: s.maxDepth,
                          epsilon: 1e-4, spp: s.spp, features: s.features, scene: s.scene };
-        return renderFrame(tracers[i], settings).then(function (image) {
+        return renderFrame(tracer, settings).then(function (image) {
           if (stale()) return;
           var reference = stageReferences[i], a = compare(image, reference);
           if (a.passes) {
             rows[i].textContent = "✓ " + s.label + ": the render matches chapter " + s.chapter +
               "'s within the lab model's tolerance: " + s.task + " is right";
-            return stage(i + 1, tracers);
+            return stage(i + 1, tracer);
           }
           for (var k = i; k < rows.length; k++) {
             rows[k].textContent = (k === i ? "✗ " : "· ") + LAB.stages[k].label + ": " + LAB.stages[k].task;
           }
-          verdict.textContent = "✗ " + s.label + ", the render differs from chapter " + s.chapter +
-            "'s, which adds " + s.shows + ": " + s.task + " (`" + s.region + "`) is not right yet. " +
-            agreementText(a) + ".";
+          verdict.textContent = "";
+          verdict.appendChild(element("span", { text: "✗ " + s.label + ", the render differs from chapter " +
+            s.chapter + "'s, which adds " + s.shows + ": " + s.task + " (" }));
+          verdict.appendChild(element("code", { text: s.region }));
+          verdict.appendChild(element("span", { text: ") is not right yet." }));
+          verdict.appendChild(element("span", { "class": "lab-numbers", text: " " + agreementText(a) + "." }));
           draw(yours, image);
           draw(theirs, reference);
           draw(diff, difference(image, reference));
           refCaption.textContent = s.package + "'s own render on the CPU";
           pictures.hidden = false;
+          took();
           box.dataset.state = "failed";
           box.dataset.stage = String(i);
           box.dataset.region = s.region;

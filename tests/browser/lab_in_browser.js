@@ -62,6 +62,7 @@ async function tryVariant(page, variant) {
                              null, { timeout });
   const data = await settled(page, "#lab-tasks", ["passed", "failed", "compile-error", "error"]);
   data.name = variant.name;
+  data.ms = Number(data.ms);
   data.verdict = await page.$eval("#lab-verdict", (e) => e.textContent);
   data.messages = await page.$eval("#lab-messages", (e) => e.textContent);
   if (cases.shots) {
@@ -72,7 +73,9 @@ async function tryVariant(page, variant) {
 }
 
 (async () => {
-  const result = { requests: [], console: [] };
+  const result = { requests: [], console: [], phases: {} };
+  let last = Date.now();
+  const phase = (name) => { const now = Date.now(); result.phases[name] = now - last; last = now; };
   const browser = await chromium.launch({
     executablePath: cases.chromium,
     headless: true,
@@ -92,10 +95,12 @@ async function tryVariant(page, variant) {
     if (result.gpu === "ready") {
       // The blank, as the page first shows it, and its first check.
       result.first = await settled(page, "#lab-tasks", ["passed", "failed", "compile-error", "error"]);
+      phase("launch, load and the blank's first check");
       result.chapters = [];
       for (const chapter of cases.chapters) {
         result.chapters.push(await viewChapter(page, chapter, cases.size));
       }
+      phase("chapters 1-5");
       result.times = [];
       for (const size of cases.timeSizes || []) {
         for (const chapter of cases.timeChapters || []) {
@@ -107,6 +112,7 @@ async function tryVariant(page, variant) {
       for (const variant of cases.variants) {
         result.variants.push(await tryVariant(page, variant));
       }
+      phase("answers");
       // The learner's text survives a reload.
       await page.fill("#lab-editor", cases.kept);
       await page.reload();
@@ -119,6 +125,7 @@ async function tryVariant(page, variant) {
       }
     }
     await page.close();
+    phase("reload");
 
     // Served: the same page over HTTP from this machine.
     const server = await serve(cases.root);
@@ -132,6 +139,7 @@ async function tryVariant(page, variant) {
       result.served.view = await settled(served, "#lab-viewer", ["done", "error"]);
     }
     server.close();
+    phase("served");
   } catch (error) {
     result.error = String(error && error.stack || error);
   } finally {

@@ -253,10 +253,13 @@ fn the_lab_page_renders_every_chapter_and_judges_the_three_tasks_in_a_browser() 
     assert!(output.status.success(), "node failed:\n{stdout}\n{stderr}");
     let result: Value = serde_json::from_str(stdout.trim())
         .unwrap_or_else(|e| panic!("the driver's output ({e}):\n{stdout}\n{stderr}"));
-    println!(
-        "{}",
-        serde_json::to_string_pretty(&result["times"]).unwrap()
-    );
+    println!("phases (ms): {}", result["phases"]);
+    for t in result["times"].as_array().into_iter().flatten() {
+        println!(
+            "frame time: chapter {} at {}: {} ms",
+            t["chapter"], t["size"], t["frameMs"]
+        );
+    }
     assert!(result["error"].is_null(), "{}", result["error"]);
     assert_eq!(result["gpu"], "ready", "{}", result["status"]);
     assert_eq!(result["console"], json!([]), "errors in the page's console");
@@ -276,7 +279,7 @@ fn the_lab_page_renders_every_chapter_and_judges_the_three_tasks_in_a_browser() 
     let judged = result["variants"].as_array().unwrap();
     assert_eq!(judged.len(), variants.len());
     for (asked, got) in variants.iter().zip(judged) {
-        println!("{}: {}", asked["name"], got["verdict"]);
+        println!("{} ({} ms): {}", asked["name"], got["ms"], got["verdict"]);
         assert_eq!(got["state"], asked["expect"], "{}: {got}", asked["name"]);
         if let Some(stage) = asked["stage"].as_u64() {
             assert_eq!(got["stage"], stage.to_string(), "{}: {got}", asked["name"]);
