@@ -17,6 +17,15 @@ pub const SPHERE_SIZE: usize = 48;
 /// Where `first_row` and `band_rows` sit in `Params`.
 pub const FIRST_ROW_AT: usize = 156;
 pub const BAND_ROWS_AT: usize = 172;
+/// Where the render's settings sit in `Params`: the book's lab page
+/// (`book/src/lab-in-browser.md`) sets them in the bytes [`pack`] wrote,
+/// as [`Inputs::band`] sets the band, so the layout is written only here.
+pub const WIDTH_AT: usize = 12;
+pub const HEIGHT_AT: usize = 28;
+pub const EPSILON_AT: usize = 60;
+pub const MAX_DEPTH_AT: usize = 92;
+pub const SPP_AT: usize = 108;
+pub const FEATURES_AT: usize = 140;
 /// The bytes of one `Progress` and of one `Pending` in `tracer.wgsl`: the
 /// state a pixel keeps between dispatches is one of the first and a stack
 /// of the second.
@@ -222,6 +231,38 @@ mod tests {
         // Unbanded, the whole image is one band.
         let whole = &inputs.params;
         assert_eq!(whole[BAND_ROWS_AT..BAND_ROWS_AT + 4], 6u32.to_le_bytes());
+    }
+
+    #[test]
+    fn the_settings_are_written_where_the_shader_reads_them() {
+        let (_, members) = wgsl_layout("Params");
+        let at = |name: &str| members.iter().find(|(n, _)| n == name).unwrap().1;
+        let fields = [
+            ("width", WIDTH_AT),
+            ("height", HEIGHT_AT),
+            ("epsilon", EPSILON_AT),
+            ("max_depth", MAX_DEPTH_AT),
+            ("spp", SPP_AT),
+            ("features", FEATURES_AT),
+        ];
+        for (name, offset) in fields {
+            assert_eq!(at(name), offset, "{name}");
+        }
+        let inputs = pack(
+            &Scene::lab(),
+            &Camera::lab(),
+            &settings(5, None),
+            crate::Like::Reflection.features(),
+        )
+        .unwrap();
+        let word = |at: usize| <[u8; 4]>::try_from(&inputs.params[at..at + 4]).unwrap();
+        assert_eq!(u32::from_le_bytes(word(WIDTH_AT)), 8);
+        assert_eq!(u32::from_le_bytes(word(HEIGHT_AT)), 6);
+        assert_eq!(f32::from_le_bytes(word(EPSILON_AT)), 1e-4);
+        assert_eq!(u32::from_le_bytes(word(MAX_DEPTH_AT)), 10);
+        assert_eq!(u32::from_le_bytes(word(SPP_AT)), 5);
+        // Chapter 3: shadows and reflection, bits 0 and 1.
+        assert_eq!(u32::from_le_bytes(word(FEATURES_AT)), 0b011);
     }
 
     #[test]

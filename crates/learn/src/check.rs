@@ -953,7 +953,7 @@ pub fn reference_image(number: u8) -> RgbImage {
 
 /// The reference chapter's render of a scene file (chapters 1–5), or of
 /// the lab scene when there is none.
-fn reference_image_in(number: u8, scene: Option<&Path>) -> Result<RgbImage, String> {
+pub fn reference_image_in(number: u8, scene: Option<&Path>) -> Result<RgbImage, String> {
     let Some(file) = scene else {
         return Ok(reference_image(number));
     };

@@ -8,6 +8,7 @@ pub mod claims;
 pub mod concepts;
 pub mod extras;
 pub mod gpu_speed;
+pub mod lab_page;
 pub mod learn_figures;
 pub mod many_spheres;
 pub mod math;
@@ -240,6 +241,12 @@ pub fn make_figures(
     written.extend(extras::make_extras(&figures.join("extras"), size)?);
     written.extend(antialiasing::make_figures(&figures.join("sampling"), size)?);
     written.extend(learn_figures::make_learn_figures(&figures.join("learn"))?);
+    // The lab in the browser: chapter 10's shader, its blank, the packed
+    // scenes and the CPU renders its page judges by.
+    written.extend(lab_page::make_lab_page(
+        &figures.join("lab-in-browser"),
+        scenes,
+    )?);
     // The explorer's screenshots, made through its own state and scripts
     // without a window, at its window's size.
     written.extend(
