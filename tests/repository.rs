@@ -4,12 +4,11 @@ use std::path::{Path, PathBuf};
 
 /// Folders that hold what the programs write or what was fetched, not what
 /// the repository ships.
-const GENERATED: [&str; 7] = [
+const GENERATED: [&str; 6] = [
     ".git",
     "target",
     "out",
     "my-lab",
-    "node_modules",
     "book/build",
     "book/src/figures",
 ];
@@ -20,7 +19,9 @@ fn shipped_files(root: &Path, dir: &Path, files: &mut Vec<PathBuf>) {
     for entry in entries {
         let path = entry.expect("a folder entry").path();
         let relative = path.strip_prefix(root).expect("below the root");
-        if GENERATED.iter().any(|g| relative == Path::new(g)) {
+        // npm's packages, wherever `npm ci` put them (tests/browser/).
+        let fetched = path.file_name().is_some_and(|n| n == "node_modules");
+        if fetched || GENERATED.iter().any(|g| relative == Path::new(g)) {
             continue;
         }
         if path.is_dir() {
