@@ -21,15 +21,10 @@ use learn::check::{Limits, Verdict, check_with};
 use learn::exercise::{EXERCISES, Exercise, exercise};
 use learn::lab::Lab;
 
-static LOCK: Mutex<()> = Mutex::new(());
+mod author;
+use author::{author_lab, root};
 
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .ancestors()
-        .nth(2)
-        .expect("crates/learn/ is inside the workspace")
-        .to_owned()
-}
+static LOCK: Mutex<()> = Mutex::new(());
 
 /// A lab in a fresh temporary folder, building into the shared target:
 /// for the tests that lay exercises out but never build them.
@@ -44,15 +39,6 @@ fn temp_lab() -> (tempfile::TempDir, Lab) {
 }
 
 /// The one lab every check here builds in (see the top of this file).
-fn author_lab() -> Lab {
-    let root = root();
-    Lab {
-        dir: root.join("target").join("learn-author-checks"),
-        version: "0.1.0-author-checks".to_owned(),
-        ..Lab::in_workspace(&root)
-    }
-}
-
 /// Lay `exercise` into the author lab afresh, as handed out or solved:
 /// whatever an earlier check left in its folder goes first.
 fn lay(lab: &Lab, exercise: &Exercise, solved: bool) {

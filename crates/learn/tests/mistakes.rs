@@ -18,20 +18,10 @@ use learn::lab::Lab;
 use learn::mistakes::{MISTAKES, Mistake, made_in, source_file};
 use learn::path::{Item, find};
 
-static LOCK: Mutex<()> = Mutex::new(());
+mod author;
+use author::author_lab;
 
-fn author_lab() -> Lab {
-    let root: PathBuf = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .ancestors()
-        .nth(2)
-        .expect("crates/learn/ is inside the workspace")
-        .to_owned();
-    Lab {
-        dir: root.join("target").join("learn-author-checks"),
-        version: "0.1.0-author-checks".to_owned(),
-        ..Lab::in_workspace(&root)
-    }
-}
+static LOCK: Mutex<()> = Mutex::new(());
 
 const SHORT: Limits = Limits {
     tests: Duration::from_secs(20),

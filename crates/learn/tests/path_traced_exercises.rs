@@ -8,7 +8,7 @@
 //! They build in the author lab that `exercises.rs` uses (see there), so
 //! each of them is an incremental build of an exercise compiled once.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::sync::Mutex;
 use std::time::Duration;
 
@@ -16,20 +16,10 @@ use learn::check::{Limits, Verdict, check_picture_with, check_with};
 use learn::exercise::{Exercise, exercise_named};
 use learn::lab::Lab;
 
-static LOCK: Mutex<()> = Mutex::new(());
+mod author;
+use author::author_lab;
 
-fn author_lab() -> Lab {
-    let root: PathBuf = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .ancestors()
-        .nth(2)
-        .expect("crates/learn/ is inside the workspace")
-        .to_owned();
-    Lab {
-        dir: root.join("target").join("learn-author-checks"),
-        version: "0.1.0-author-checks".to_owned(),
-        ..Lab::in_workspace(&root)
-    }
-}
+static LOCK: Mutex<()> = Mutex::new(());
 
 const SHORT: Limits = Limits {
     tests: Duration::from_secs(10),

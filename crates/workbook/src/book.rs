@@ -4,6 +4,17 @@ use std::path::{Path, PathBuf};
 
 use crate::JobError;
 
+/// The files of `book/` beside its pages: the settings, and the styles and
+/// scripts `book.toml` adds to every page (a copy of the book needs them).
+pub const BOOK_FILES: [&str; 6] = [
+    "book.toml",
+    "math.css",
+    "sliders.css",
+    "sliders.js",
+    "lab-in-browser.css",
+    "lab-in-browser.js",
+];
+
 /// Build the book in `book_dir` (its `book.toml` names the output
 /// folder); returns the path of its `index.html`.
 pub fn build(book_dir: &Path) -> Result<PathBuf, JobError> {

@@ -55,7 +55,7 @@ pub fn make_lab_page(dir: &Path, scenes: &Path) -> Result<Vec<PathBuf>, JobError
         let name = format!("{}.png", like.binary());
         let path = dir.join(&name);
         save_png(&image, &path)?;
-        let (max_depth, spp, _) = like.defaults();
+        let raylab_like::Defaults { max_depth, spp, .. } = like.defaults();
         chapters.push(json!({
             "number": like as u32 + 1,
             "binary": like.binary(),
@@ -79,7 +79,7 @@ pub fn make_lab_page(dir: &Path, scenes: &Path) -> Result<Vec<PathBuf>, JobError
         let path = dir.join(format!("check-{}.png", i + 1));
         save_png(&image, &path)?;
         let like = Like::ALL[usize::from(stage.chapter) - 1];
-        let (max_depth, spp, _) = like.defaults();
+        let raylab_like::Defaults { max_depth, spp, .. } = like.defaults();
         stages.push(json!({
             "chapter": stage.chapter,
             "package": stage.package,

@@ -36,7 +36,7 @@ pub enum JobError {
     #[error("the book did not build: {0}")]
     Book(String),
     #[error("the explorer's figures: {0}")]
-    Explorer(String),
+    Explorer(#[from] raylab_explore::ExploreError),
 }
 
 /// Image size for the figures: the chapters' own default, or smaller for tests.
@@ -249,10 +249,9 @@ pub fn make_figures(
     )?);
     // The explorer's screenshots, made through its own state and scripts
     // without a window, at its window's size.
-    written.extend(
-        raylab_explore::figures::write_book_figures(&figures.join("explorer"))
-            .map_err(JobError::Explorer)?,
-    );
+    written.extend(raylab_explore::figures::write_book_figures(
+        &figures.join("explorer"),
+    )?);
     written.extend(concepts::make_concepts(&figures.join("concepts"))?);
     written.extend(waves::make_figures(&figures.join("waves"), size)?);
     written.extend(many_spheres::make_figures(

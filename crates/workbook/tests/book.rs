@@ -90,14 +90,7 @@ fn the_book_builds_and_shows_only_figures_the_programs_make() {
     let temp = tempfile::tempdir().unwrap();
     let book = temp.path().join("book");
     std::fs::create_dir_all(book.join("src")).unwrap();
-    for file in [
-        "book.toml",
-        "math.css",
-        "sliders.css",
-        "sliders.js",
-        "lab-in-browser.css",
-        "lab-in-browser.js",
-    ] {
+    for file in workbook::book::BOOK_FILES {
         std::fs::copy(book_dir().join(file), book.join(file)).unwrap();
     }
     for page in pages(&book_dir().join("src")) {

@@ -47,14 +47,7 @@ fn build_page(dir: &Path) -> PathBuf {
     let src = book.join("src");
     std::fs::create_dir_all(&src).unwrap();
     let real = root().join("book");
-    for file in [
-        "book.toml",
-        "math.css",
-        "sliders.css",
-        "sliders.js",
-        "lab-in-browser.css",
-        "lab-in-browser.js",
-    ] {
+    for file in workbook::book::BOOK_FILES {
         std::fs::copy(real.join(file), book.join(file)).unwrap();
     }
     std::fs::copy(
