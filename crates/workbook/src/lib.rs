@@ -35,6 +35,8 @@ pub enum JobError {
     Book(String),
     #[error("the explorer's figures: {0}")]
     Explorer(String),
+    #[error("a figure's measurements: {0}")]
+    Measured(String),
 }
 
 /// Image size for the figures: the chapters' own default, or smaller for tests.
@@ -245,7 +247,7 @@ pub fn make_figures(
         raylab_explore::figures::write_book_figures(&figures.join("explorer"))
             .map_err(JobError::Explorer)?,
     );
-    written.extend(concepts::make_concepts(&figures.join("concepts"))?);
+    written.extend(concepts::make_concepts(&figures.join("concepts"), figures)?);
     written.extend(waves::make_figures(&figures.join("waves"), size)?);
     written.extend(many_spheres::make_figures(
         &figures.join(ch09_many_spheres::BINARY),
