@@ -146,8 +146,13 @@ fn acne_figures(
     written.push(png);
     let pixels = u64::from(width) * u64::from(lab.height());
     let text = format!(
-        "![The field at the lab's ε = {lab_epsilon:e} and at its own ε = {epsilon:e}: a          {}×{} window at ({}, {}), {zoom}× enlarged, with the pixels that differ by more than          {SPECKLE} levels in red](figures/ch09-many-spheres/acne.png)\n\n         *At the lab's ε = {lab_epsilon:e}, {} of the render's {} pixels ({:.2} %) differ from          the render at the field's own ε = {epsilon:e} by more than {SPECKLE} levels, {in_window}          of them in this window. At its own ε the showcase differs from a render at ε = \
-         {LARGE_EPSILON:e} in {left} pixels by as much.*\n",
+        "![The field at the lab's ε = {lab_epsilon:e} and at its own ε = {epsilon:e}: a \
+         {}×{} window at ({}, {}), {zoom}× enlarged, with the pixels that differ by more than \
+         {SPECKLE} levels in red](figures/ch09-many-spheres/acne.png)\n\n\
+         *At the lab's ε = {lab_epsilon:e}, {} of the render's {} pixels ({:.2} %) differ from \
+         the render at the field's own ε = {epsilon:e} by more than {SPECKLE} levels, \
+         {in_window} of them in this window. At its own ε the showcase differs from a render \
+         at ε = {LARGE_EPSILON:e} in {left} pixels by as much.*\n",
         window.0,
         window.1,
         corner.0,
