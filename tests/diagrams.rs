@@ -382,7 +382,7 @@ fn the_sentence_agrees_with_the_csv(sweep: &Path) {
 #[test]
 fn a_scene_file_sets_the_offset_unless_epsilon_is_given() {
     let dir = tempfile::tempdir().unwrap();
-    let lab = std::fs::read_to_string("scenes/lab.toml").unwrap();
+    let lab = std::fs::read_to_string("../scenes/lab.toml").unwrap();
     let with = dir.path().join("with.toml");
     std::fs::write(&with, format!("epsilon = 0.002\n{lab}")).unwrap();
     let chapter = &ch02_shadows::CHAPTER;
@@ -394,7 +394,7 @@ fn a_scene_file_sets_the_offset_unless_epsilon_is_given() {
     };
     let file = with.to_str().unwrap();
     assert_eq!(epsilon(&[]), 1e-4);
-    assert_eq!(epsilon(&["--scene", "scenes/lab.toml"]), 1e-4);
+    assert_eq!(epsilon(&["--scene", "../scenes/lab.toml"]), 1e-4);
     assert_eq!(epsilon(&["--scene", file]), 0.002);
     assert_eq!(epsilon(&["--scene", file, "--epsilon", "0"]), 0.0);
 }

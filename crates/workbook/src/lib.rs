@@ -238,6 +238,7 @@ pub fn make_figures(
     let gpu_path = figures.join("speed-gpu.md");
     save_text(&gpu_speed::table(gpu_size, &gpu), &gpu_path)?;
     written.push(gpu_path);
+    written.extend(gpu_speed::figures(&figures.join("ch10-gpu"), gpu_size)?);
     written.extend(extras::make_extras(&figures.join("extras"), size)?);
     written.extend(antialiasing::make_figures(&figures.join("sampling"), size)?);
     written.extend(learn_figures::make_learn_figures(&figures.join("learn"))?);

@@ -151,8 +151,8 @@ fn acne_figures(
          {SPECKLE} levels in red](figures/ch09-many-spheres/acne.png)\n\n\
          *At the lab's ε = {lab_epsilon:e}, {} of the render's {} pixels ({:.2} %) differ from \
          the render at the field's own ε = {epsilon:e} by more than {SPECKLE} levels, \
-         {in_window} of them in this window. At its own ε the showcase differs from a render \
-         at ε = {LARGE_EPSILON:e} in {left} pixels by as much.*\n",
+         {in_window} of them in this window. Against a render at ε = {LARGE_EPSILON:e}, the \
+         showcase at its own ε has {left} pixels that differ by as much.*\n",
         window.0,
         window.1,
         corner.0,

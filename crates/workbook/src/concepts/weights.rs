@@ -145,11 +145,20 @@ pub fn figure(settled: &[(&str, u32)]) -> RgbImage {
             .collect();
         plot = plot.vertical_marker(
             f64::from(depth),
-            format!("measured: {} settle at {depth}", names.join(", ")),
+            format!(
+                "measured: {} {} at {depth}",
+                names.join(", "),
+                if names.len() == 1 {
+                    "settles"
+                } else {
+                    "settle"
+                }
+            ),
             TEXT_MUTED,
         );
     }
-    plot.render(1200, 640)
+    // The size of the other line plots: at a page's width its type stays legible.
+    plot.render(900, 540)
 }
 
 /// The figure's line for the book, naming the measured depths.
