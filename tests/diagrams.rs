@@ -378,3 +378,23 @@ fn the_sentence_agrees_with_the_csv(sweep: &Path) {
         }
     }
 }
+
+#[test]
+fn a_scene_file_sets_the_offset_unless_epsilon_is_given() {
+    let dir = tempfile::tempdir().unwrap();
+    let lab = std::fs::read_to_string("../scenes/lab.toml").unwrap();
+    let with = dir.path().join("with.toml");
+    std::fs::write(&with, format!("epsilon = 0.002\n{lab}")).unwrap();
+    let chapter = &ch02_shadows::CHAPTER;
+    let epsilon = |extra: &[&str]| {
+        let mut args = vec![chapter.binary];
+        args.extend_from_slice(extra);
+        let options = Options::parse_for(chapter, args).unwrap();
+        options.settings().unwrap().epsilon
+    };
+    let file = with.to_str().unwrap();
+    assert_eq!(epsilon(&[]), 1e-4);
+    assert_eq!(epsilon(&["--scene", "../scenes/lab.toml"]), 1e-4);
+    assert_eq!(epsilon(&["--scene", file]), 0.002);
+    assert_eq!(epsilon(&["--scene", file, "--epsilon", "0"]), 0.0);
+}

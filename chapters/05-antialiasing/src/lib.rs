@@ -55,11 +55,12 @@ pub const CHAPTER: Chapter<AntiAliasing> = Chapter {
     about: "Chapter 5, anti-aliasing: five rays per pixel, averaged in linear light.",
     max_depth: 10,
     spp: 5,
-    // Chapter 4's pixel, off the glass ball's centre, now with five trees.
+    // A pixel on the glass ball's top edge, against the horizon: of its
+    // five rays some hit the glass, some the ground, some the sky.
     probe: ProbeTarget::OnSphere {
         name: "glass",
-        right: 0.5,
-        up: 0.3,
+        right: 0.1,
+        up: 1.01,
     },
     step: AntiAliasing,
     render: raylab::render,

@@ -113,7 +113,7 @@ pub fn settings(options: &CommonFlags, flags: &Flags) -> Result<PathSettings, Cl
         height: options.height,
         sampling,
         max_depth: options.max_depth,
-        epsilon: options.epsilon,
+        epsilon: options.epsilon()?,
         materials: flags.materials,
         sun_size: flags.sun_size,
         caustics: flags.caustics,

@@ -37,9 +37,13 @@ pub fn field(n: usize, seed: u64) -> String {
     }
     let half = side as f32 * CELL / 2.0;
     let (eye_y, eye_z) = (0.35 * half + 1.2, half + 2.5);
+    let epsilon = epsilon_for(half.hypot(eye_y).hypot(eye_z + half));
     let mut text = format!(
         "# A field of {n} random spheres (seed {seed}), written by\n\
          # `cargo run -p ch09-many-spheres -- --generate-field {n} --seed {seed}`.\n\n\
+         # How far shadow and secondary rays start from their surface: the lab's\n\
+         # 1e-4 is below the rounding error of a hit this far from the eye.\n\
+         epsilon = {epsilon:.1e}\n\n\
          [camera]\neye = [0.0, {eye_y:.3}, {eye_z:.3}]\ntarget = [0.0, 0.0, {:.3}]\n\
          up = [0.0, 1.0, 0.0]\nfov = 45.0\n\n\
          [sun]\ndirection = [-1.0, 1.2, 0.8]\nbrightness = 25.0\n\n\
@@ -72,6 +76,22 @@ pub fn field(n: usize, seed: u64) -> String {
 }
 // ANCHOR_END: field
 
+/// The smallest radius of a field's spheres.
+const SMALLEST_RADIUS: f32 = 0.15;
+
+// ANCHOR: epsilon
+/// The offset a field's rays need when its farthest point is `far` units
+/// from the eye. The sphere test subtracts two numbers near `far²`, so it
+/// rounds by about `far² · 2⁻²³`; divided by the radius, that is how far a
+/// hit point may lie inside its sphere, and a grazing hit lies several
+/// times farther. Eight times that, never less than the lab's 1e-4, nor
+/// more than the 0.1 a scene file allows.
+pub fn epsilon_for(far: f32) -> f32 {
+    let rounding = far * far * f32::EPSILON;
+    (8.0 * rounding / SMALLEST_RADIUS).clamp(1e-4, raylab_cli::MAX_EPSILON)
+}
+// ANCHOR_END: epsilon
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -88,6 +108,21 @@ mod tests {
         for n in [0, 1, 7, 500] {
             assert_eq!(load(&field(n, 3)).spheres().len(), n);
         }
+    }
+
+    #[test]
+    fn a_field_asks_for_an_epsilon_that_grows_with_the_square_of_its_size() {
+        // 30 units away: 900 · 2⁻²³ / 0.15 · 8 = 5.72e-3.
+        assert!((epsilon_for(30.0) - 5.722e-3).abs() < 1e-6);
+        assert_eq!(epsilon_for(3.0), 1e-4);
+        assert_eq!(epsilon_for(1e4), 0.1);
+        let file = |n| {
+            let dir = tempfile::tempdir().unwrap();
+            let path = dir.path().join("field.toml");
+            std::fs::write(&path, field(n, 1)).unwrap();
+            raylab_cli::scene_file::load_file(&path).unwrap().epsilon
+        };
+        assert_eq!(file(500), Some(7.2e-3));
     }
 
     #[test]

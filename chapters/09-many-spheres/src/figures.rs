@@ -273,3 +273,117 @@ const EDGES: [(usize, usize); 12] = [
     (2, 6),
     (3, 7),
 ];
+
+/// A change this large is a lit point turned to shadow (a tenth of the
+/// sunlight) or a reflection that found its own sphere, not the shift of a
+/// grazing ray onto another checker square: acne.
+pub const SPECKLE: u8 = 24;
+
+/// Per pixel (row by row), whether `image` differs from `reference` by
+/// more than [`SPECKLE`] levels in some channel.
+pub fn speckled(image: &RgbImage, reference: &RgbImage) -> Vec<bool> {
+    image
+        .pixels()
+        .zip(reference.pixels())
+        .map(|(a, b)| a.0.iter().zip(b.0).any(|(x, y)| x.abs_diff(y) > SPECKLE))
+        .collect()
+}
+
+/// The top-left corner of the `w` × `h` window of a `width`-wide `mask`
+/// that holds the most `true` pixels (the first such, scanning in steps of
+/// 8 pixels), and how many it holds.
+pub fn densest_window(mask: &[bool], width: u32, w: u32, h: u32) -> ((u32, u32), usize) {
+    let height = mask.len() as u32 / width.max(1);
+    let count = |x0: u32, y0: u32| {
+        (y0..y0 + h)
+            .map(|y| {
+                let row = (y * width) as usize;
+                mask[row + x0 as usize..row + (x0 + w) as usize]
+                    .iter()
+                    .filter(|&&s| s)
+                    .count()
+            })
+            .sum::<usize>()
+    };
+    let mut best = ((0, 0), 0);
+    for y0 in (0..=height.saturating_sub(h)).step_by(8) {
+        for x0 in (0..=width.saturating_sub(w)).step_by(8) {
+            let n = count(x0, y0);
+            if n > best.1 {
+                best = ((x0, y0), n);
+            }
+        }
+    }
+    best
+}
+
+/// The window of the field where the lab's offset speckles most: the
+/// render at the lab's `lab_epsilon` and at the field's own `own_epsilon`,
+/// cropped and enlarged `zoom` times, with the speckled pixels marked.
+pub fn acne_figure(
+    lab: &RgbImage,
+    own: &RgbImage,
+    (lab_epsilon, own_epsilon): (f32, f32),
+    (corner, size): ((u32, u32), (u32, u32)),
+    zoom: u32,
+) -> RgbImage {
+    let crop = |image: &RgbImage| {
+        let part = image::imageops::crop_imm(image, corner.0, corner.1, size.0, size.1).to_image();
+        image::imageops::resize(
+            &part,
+            size.0 * zoom,
+            size.1 * zoom,
+            image::imageops::FilterType::Nearest,
+        )
+    };
+    let mask = speckled(lab, own);
+    let mut marked = lab.clone();
+    for (pixel, &speck) in marked.pixels_mut().zip(&mask) {
+        // The speckles in red, everything else faded to a pale grey.
+        pixel.0 = if speck {
+            [220, 20, 60]
+        } else {
+            let grey = (u16::from(pixel.0[0]) + u16::from(pixel.0[1]) + u16::from(pixel.0[2])) / 3;
+            [(170 + grey / 4) as u8; 3]
+        };
+    }
+    let labels = [
+        format!("ε = {lab_epsilon:e}, the lab's"),
+        format!("ε = {own_epsilon:e}, the field's own"),
+        format!("more than {SPECKLE} levels apart (red)"),
+    ];
+    let tiles = [crop(lab), crop(own), crop(&marked)];
+    let tiles: Vec<(&str, &RgbImage)> = labels.iter().map(String::as_str).zip(&tiles).collect();
+    raylab_plot::montage(
+        &format!(
+            "Acne at scale: a {}×{} window, {zoom}× enlarged, where the lab's ε speckles most",
+            size.0, size.1
+        ),
+        &tiles,
+        3,
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_densest_window_is_where_the_speckles_are() {
+        let (width, height) = (64u32, 48u32);
+        let mut mask = vec![false; (width * height) as usize];
+        for (x, y) in [(3, 3), (41, 25), (44, 30), (52, 38)] {
+            mask[(y * width + x) as usize] = true;
+        }
+        assert_eq!(densest_window(&mask, width, 16, 16), ((40, 24), 3));
+    }
+
+    #[test]
+    fn only_a_change_of_more_than_24_levels_is_a_speckle() {
+        let a = RgbImage::from_pixel(2, 1, image::Rgb([100, 100, 100]));
+        let mut b = a.clone();
+        b.put_pixel(0, 0, image::Rgb([100, 124, 100]));
+        b.put_pixel(1, 0, image::Rgb([100, 100, 125]));
+        assert_eq!(speckled(&a, &b), [false, true]);
+    }
+}

@@ -94,10 +94,10 @@ pub struct CommonFlags {
           allow_negative_numbers = true)]
     pub seed: u64,
 
-    /// How far shadow and secondary rays start from their surface (try 0 for shadow acne)
-    #[arg(long, value_name = "DISTANCE", default_value_t = 1e-4, value_parser = parse_epsilon,
+    /// How far shadow and secondary rays start from their surface (try 0 for shadow acne) [default: the scene file's `epsilon`, else 1e-4]
+    #[arg(long, value_name = "DISTANCE", value_parser = parse_epsilon,
           allow_negative_numbers = true)]
-    pub epsilon: f32,
+    pub epsilon: Option<f32>,
 
     /// Render this scene file instead of the lab scene (see scenes/lab.toml)
     #[arg(long, value_name = "FILE")]
@@ -182,10 +182,17 @@ fn parse_seed(text: &str) -> Result<u64, String> {
         .map_err(|_| format!("the seed must be a whole number from 0 to {}", u64::MAX))
 }
 
+/// The lab's offset of shadow and secondary rays, in scene units.
+pub const DEFAULT_EPSILON: f32 = 1e-4;
+/// The largest offset `--epsilon` or a scene file may ask for.
+pub const MAX_EPSILON: f32 = 0.1;
+
 fn parse_epsilon(text: &str) -> Result<f32, String> {
     match text.parse::<f32>() {
-        Ok(e) if e.is_finite() && (0.0..=0.1).contains(&e) => Ok(e),
-        _ => Err("the offset must be a number from 0 to 0.1 (scene units)".into()),
+        Ok(e) if e.is_finite() && (0.0..=MAX_EPSILON).contains(&e) => Ok(e),
+        _ => Err(format!(
+            "the offset must be a number from 0 to {MAX_EPSILON} (scene units)"
+        )),
     }
 }
 
@@ -290,9 +297,24 @@ impl CommonFlags {
             width: self.width,
             height: self.height,
             max_depth: self.max_depth,
-            epsilon: self.epsilon,
+            epsilon: self.epsilon()?,
             sampling: Sampling::new(self.spp, self.pattern, self.seed)?,
         })
+    }
+
+    /// The offset of shadow and secondary rays: `--epsilon` where given,
+    /// else the scene file's own `epsilon` where it sets one (a scene far
+    /// larger than the lab's needs a larger one), else the lab's
+    /// [`DEFAULT_EPSILON`].
+    pub fn epsilon(&self) -> Result<f32, CliError> {
+        if let Some(epsilon) = self.epsilon {
+            return Ok(epsilon);
+        }
+        let from_scene = match &self.scene {
+            Some(path) => scene_file::load_file(path)?.epsilon,
+            None => None,
+        };
+        Ok(from_scene.unwrap_or(DEFAULT_EPSILON))
     }
 
     /// Read `--scene`, or the lab's scene and camera without it.

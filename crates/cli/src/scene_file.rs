@@ -32,6 +32,9 @@ pub const MAX_RADIANCE: f32 = 1e6;
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct SceneFile {
+    /// How far shadow and secondary rays start from their surface; the
+    /// lab's 1e-4 where the file does not say.
+    epsilon: Option<f32>,
     camera: CameraSpec,
     sun: SunSpec,
     sky: SkySpec,
@@ -116,8 +119,27 @@ pub enum SceneFileError {
     TooManyObjects { path: PathBuf, count: usize },
 }
 
+/// A scene file, read and checked.
+#[derive(Clone, Debug)]
+pub struct SceneDescription {
+    pub scene: Scene,
+    pub camera: Camera,
+    /// The offset of shadow and secondary rays the file asks for, if any.
+    pub epsilon: Option<f32>,
+}
+
 /// Read and check a scene file: the scene, and the camera that looks at it.
 pub fn load(path: &Path) -> Result<(Scene, Camera), SceneFileError> {
+    load_file(path).map(|d| (d.scene, d.camera))
+}
+
+/// Parse and check the text of a scene file; `path` is for messages only.
+pub fn parse(text: &str, path: &Path) -> Result<(Scene, Camera), SceneFileError> {
+    parse_file(text, path).map(|d| (d.scene, d.camera))
+}
+
+/// Read and check a scene file, with the offset it asks for.
+pub fn load_file(path: &Path) -> Result<SceneDescription, SceneFileError> {
     let read_error = |source| SceneFileError::Read {
         path: path.to_owned(),
         source,
@@ -135,11 +157,11 @@ pub fn load(path: &Path) -> Result<(Scene, Camera), SceneFileError> {
             bytes,
         });
     }
-    parse(&text, path)
+    parse_file(&text, path)
 }
 
-/// Parse and check the text of a scene file; `path` is for messages only.
-pub fn parse(text: &str, path: &Path) -> Result<(Scene, Camera), SceneFileError> {
+/// Parse and check the text of a scene file, with the offset it asks for.
+pub fn parse_file(text: &str, path: &Path) -> Result<SceneDescription, SceneFileError> {
     let file: SceneFile = toml::from_str(text).map_err(|e| syntax_error(&e, text, path))?;
     if file.sphere.len() > MAX_OBJECTS {
         return Err(SceneFileError::TooManyObjects {
@@ -156,9 +178,17 @@ pub fn parse(text: &str, path: &Path) -> Result<(Scene, Camera), SceneFileError>
 /// Turn the checked-by-type file into a scene, checking every rule that
 /// types cannot: finite numbers, directions that are not zero, materials
 /// that do not create light. An error names the object, then the rule.
-fn build(file: SceneFile) -> Result<(Scene, Camera), String> {
+fn build(file: SceneFile) -> Result<SceneDescription, String> {
     let fail = |object: &str, rule: String| format!("{object}: {rule}");
     check_bounds(&file)?;
+    if let Some(e) = file.epsilon
+        && !(e.is_finite() && (0.0..=crate::MAX_EPSILON).contains(&e))
+    {
+        return Err(format!(
+            "epsilon is {e}, but it must be a number from 0 to {} (scene units)",
+            crate::MAX_EPSILON
+        ));
+    }
     let c = &file.camera;
     // A NaN or infinite eye or target fails here too: no view direction.
     let camera = Camera::look_at(c.eye.into(), c.target.into(), c.up.into(), c.fov)
@@ -224,7 +254,11 @@ fn build(file: SceneFile) -> Result<(Scene, Camera), String> {
             .add_sphere(&name, shape, material)
             .map_err(|e| e.to_string())?;
     }
-    Ok((scene, camera))
+    Ok(SceneDescription {
+        scene,
+        camera,
+        epsilon: file.epsilon,
+    })
 }
 
 /// Every coordinate and radius within [`MAX_COORDINATE`], every light
@@ -370,6 +404,19 @@ mod tests {
             include_str!("../../../scenes/total-internal-reflection.toml"),
         ] {
             parse(text, Path::new("scene.toml")).unwrap();
+        }
+    }
+
+    #[test]
+    fn a_scene_file_may_set_its_epsilon_and_without_one_keeps_the_labs() {
+        let path = Path::new("test.toml");
+        assert_eq!(parse_file(LAB, path).unwrap().epsilon, None);
+        let text = format!("epsilon = 2e-3\n{LAB}");
+        assert_eq!(parse_file(&text, path).unwrap().epsilon, Some(2e-3));
+        for bad in ["-1e-3", "0.5", "nan"] {
+            let err = error_of(&format!("epsilon = {bad}\n{LAB}"));
+            assert!(err.contains("epsilon is"), "{err}");
+            assert!(err.contains("from 0 to 0.1"), "{err}");
         }
     }
 

@@ -12,8 +12,13 @@ use ch10_gpu::shader::Source;
 use raylab::frame::thousands;
 use raylab::{Camera, Sampling, Scene, Settings};
 
-use crate::Size;
+use std::path::{Path, PathBuf};
+
+use image::RgbImage;
+use raylab_cli::output::{save_png, save_text};
+
 use crate::speed::{ROUNDS, machine, median};
+use crate::{JobError, Size};
 
 /// One chapter's median frame on the GPU.
 #[derive(Clone, Debug, PartialEq)]
@@ -29,6 +34,110 @@ impl GpuTiming {
     fn total(&self) -> Duration {
         self.dispatch + self.readback + self.encoding
     }
+}
+
+/// Chapter 10's frame of the lab scene as chapter 4 renders it, and the
+/// CPU's image of the same at `size`: `(gpu, cpu)`, 8-bit sRGB. `Err` is
+/// the one line that says why there is none (no adapter, a failed frame).
+pub fn chapter4_frames(size: Size) -> Result<(String, RgbImage, RgbImage), String> {
+    let gpu = Gpu::new().map_err(|e| e.to_string())?;
+    let like = Like::Refraction;
+    let raylab_like::Defaults { max_depth, spp, .. } = like.defaults();
+    let settings = Settings {
+        width: size.width,
+        height: size.height,
+        max_depth,
+        epsilon: 1e-4,
+        sampling: Sampling::new(spp, None, 0).map_err(|e| e.to_string())?,
+    };
+    let scene = (Scene::lab(), Camera::lab());
+    let tracer = gpu
+        .compile(&Source::built_in(), max_depth)
+        .map_err(|e| e.to_string())?;
+    let framed =
+        render_image(&gpu, &tracer, like, &settings, &scene, false).map_err(|e| e.to_string())?;
+    let cpu = raylab::render(
+        &scene.0,
+        &scene.1,
+        &ch04_refraction::CHAPTER.step,
+        &settings,
+        raylab::Keep::IMAGE,
+        &raylab::NoProgress,
+    );
+    Ok((gpu.adapter.clone(), framed.rendered.srgb, cpu.srgb))
+}
+
+/// Chapter 10's figures into `dir`: its frame (`render.png`) and how it
+/// differs from the CPU's (`difference.png`), and `figure.md`, the lines
+/// that show them, or, without an adapter, the line that says why not.
+pub fn figures(dir: &Path, size: Size) -> Result<Vec<PathBuf>, JobError> {
+    use raylab_plot::{changed_pixels, magnified_difference, max_change, with_change_scale};
+    raylab_cli::prepare_out_dir(dir)?;
+    let mut written = Vec::new();
+    let text = match chapter4_frames(size) {
+        Err(why) => format!(
+            "*The main job found no GPU adapter on the machine that built this book ({why}), \
+             so this page has no frame of chapter 10's.*\n"
+        ),
+        Ok((adapter, gpu, cpu)) => {
+            let largest = max_change(&gpu, &cpu);
+            let gain = 255.0 / f32::from(largest.max(1));
+            let difference = with_change_scale(&magnified_difference(&cpu, &gpu, gain), gain);
+            // A map of no difference is black: then the sentence says it.
+            let images = if largest == 0 {
+                vec![("render.png", &gpu)]
+            } else {
+                vec![("render.png", &gpu), ("difference.png", &difference)]
+            };
+            for (name, image) in images {
+                let path = dir.join(name);
+                save_png(image, &path)?;
+                written.push(path);
+            }
+            let pixels = u64::from(gpu.width()) * u64::from(gpu.height());
+            let changed = changed_pixels(&gpu, &cpu, 0) as u64;
+            let over_3 = changed_pixels(&gpu, &cpu, 3) as u64;
+            let against = if largest == 0 {
+                format!(
+                    "*Against chapter 4's image on the CPU, at the same size: not one of its {} \
+                     pixels differs, on this adapter; the lab model's tolerance would allow \
+                     0.5 % to differ by more than 3 levels.*\n",
+                    thousands(pixels)
+                )
+            } else {
+                format!(
+                    "*Against chapter 4's image on the CPU: {} of its {} pixels differ at all, {} \
+                     by more than 3 levels in some channel, at most by {largest}. The lab \
+                     model's tolerance asks that 99.5 % agree within 3.*\n",
+                    thousands(changed),
+                    thousands(pixels),
+                    thousands(over_3),
+                )
+            };
+            let map = if largest == 0 {
+                String::new()
+            } else {
+                format!(
+                    "![How each pixel of chapter 10's frame differs from chapter 4's on the CPU, \
+                     on a scale up to the largest difference, {largest} \
+                     levels](figures/ch10-gpu/difference.png)\n\n"
+                )
+            };
+            format!(
+                "![Chapter 10's frame of the lab scene as chapter 4 renders it, {w} × {h}, on \
+                 {adapter}](figures/ch10-gpu/render.png)\n\n\
+                 *`cargo run --release -p ch10-gpu -- --like ch04-refraction --width {w} --height \
+                 {h}`, on {adapter}, as the main job rendered it.*\n\n\
+                 {map}{against}",
+                w = gpu.width(),
+                h = gpu.height(),
+            )
+        }
+    };
+    let path = dir.join("figure.md");
+    save_text(&text, &path)?;
+    written.push(path);
+    Ok(written)
 }
 
 /// Each of chapters 1–5's looks at `size`, [`ROUNDS`] warm frames after a

@@ -37,6 +37,8 @@ pub enum JobError {
     Book(String),
     #[error("the explorer's figures: {0}")]
     Explorer(#[from] raylab_explore::ExploreError),
+    #[error("a figure's measurements: {0}")]
+    Measured(String),
 }
 
 /// Image size for the figures: the chapters' own default, or smaller for tests.
@@ -238,6 +240,7 @@ pub fn make_figures(
     let gpu_path = figures.join("speed-gpu.md");
     save_text(&gpu_speed::table(gpu_size, &gpu), &gpu_path)?;
     written.push(gpu_path);
+    written.extend(gpu_speed::figures(&figures.join("ch10-gpu"), gpu_size)?);
     written.extend(extras::make_extras(&figures.join("extras"), size)?);
     written.extend(antialiasing::make_figures(&figures.join("sampling"), size)?);
     written.extend(learn_figures::make_learn_figures(&figures.join("learn"))?);
@@ -252,7 +255,7 @@ pub fn make_figures(
     written.extend(raylab_explore::figures::write_book_figures(
         &figures.join("explorer"),
     )?);
-    written.extend(concepts::make_concepts(&figures.join("concepts"))?);
+    written.extend(concepts::make_concepts(&figures.join("concepts"), figures)?);
     written.extend(waves::make_figures(&figures.join("waves"), size)?);
     written.extend(many_spheres::make_figures(
         &figures.join(ch09_many_spheres::BINARY),

@@ -50,14 +50,22 @@ pub fn make_figures(
     ];
     let chapter = ch09_many_spheres::chapter_eight(Like::AntiAliasing);
     let mut options =
-        Options::parse_for(&chapter, args).map_err(|e| CliError::Usage(e.to_string()))?;
+        Options::parse_for(&chapter, args.clone()).map_err(|e| CliError::Usage(e.to_string()))?;
     options.common.quiet = quiet;
     let report = cli::run(&chapter, &options)?;
     if !quiet {
         cli::print_report(&chapter, &options, &report);
     }
     let mut written = report.written.clone();
-    let (scene, camera) = raylab_cli::scene_file::load(&field).map_err(CliError::from)?;
+    let description = raylab_cli::scene_file::load_file(&field).map_err(CliError::from)?;
+    let (scene, camera) = (description.scene.clone(), description.camera);
+    written.extend(acne_figures(
+        dir,
+        &args,
+        &chapter,
+        &report.rendered.srgb,
+        description.epsilon.unwrap_or(raylab_cli::DEFAULT_EPSILON),
+    )?);
 
     let mut save = |name: &str, image: &image::RgbImage| -> Result<(), JobError> {
         let path = dir.join(name);
@@ -84,6 +92,78 @@ pub fn make_figures(
     let path = dir.join("numbers.md");
     save_text(&text, &path)?;
     written.push(path);
+    Ok(written)
+}
+
+/// An offset far above any rounding error in the field and far below the
+/// size of anything in it: the render without acne to compare with.
+pub const LARGE_EPSILON: f32 = 1e-2;
+
+/// The window of the crop of chapter 9's "ε at scale", in pixels.
+pub const ACNE_WINDOW: (u32, u32) = (96, 72);
+
+/// Chapter 9's "ε at scale": the field rendered again at the lab's 1e-4
+/// (into `lab-epsilon/`), the window where it differs most from the render
+/// at the field's own `epsilon`, enlarged (`acne.png`), and the count of
+/// speckled pixels (`acne.md`).
+fn acne_figures(
+    dir: &Path,
+    args: &[String],
+    chapter: &raylab_cli::Chapter<ch07_eight_rays::EightRays>,
+    own: &image::RgbImage,
+    epsilon: f32,
+) -> Result<Vec<PathBuf>, JobError> {
+    use ch09_many_spheres::figures::{SPECKLE, acne_figure, densest_window, speckled};
+    let lab_epsilon = raylab_cli::DEFAULT_EPSILON;
+    let render_at = |folder: &str, epsilon: f32| {
+        let mut at = args.to_vec();
+        at.retain(|a| !a.starts_with("--out="));
+        at.push(format!("--out={}", dir.join(folder).display()));
+        at.push(format!("--epsilon={epsilon}"));
+        let mut options =
+            Options::parse_for(chapter, at).map_err(|e| CliError::Usage(e.to_string()))?;
+        options.common.quiet = true;
+        cli::run(chapter, &options)
+    };
+    let report = render_at("lab-epsilon", lab_epsilon)?;
+    let large = render_at("large-epsilon", LARGE_EPSILON)?;
+    let left = speckled(own, &large.rendered.srgb)
+        .iter()
+        .filter(|&&s| s)
+        .count();
+    let lab = &report.rendered.srgb;
+    let mask = speckled(lab, own);
+    let width = lab.width();
+    let window = (ACNE_WINDOW.0.min(width), ACNE_WINDOW.1.min(lab.height()));
+    let (corner, in_window) = densest_window(&mask, width, window.0, window.1);
+    let count = mask.iter().filter(|&&s| s).count();
+    let zoom = 4;
+    let figure = acne_figure(lab, own, (lab_epsilon, epsilon), (corner, window), zoom);
+    let mut written = report.written;
+    written.extend(large.written);
+    let png = dir.join("acne.png");
+    save_png(&figure, &png)?;
+    written.push(png);
+    let pixels = u64::from(width) * u64::from(lab.height());
+    let text = format!(
+        "![The field at the lab's ε = {lab_epsilon:e} and at its own ε = {epsilon:e}: a \
+         {}×{} window at ({}, {}), {zoom}× enlarged, with the pixels that differ by more than \
+         {SPECKLE} levels in red](figures/ch09-many-spheres/acne.png)\n\n\
+         *At the lab's ε = {lab_epsilon:e}, {} of the render's {} pixels ({:.2} %) differ from \
+         the render at the field's own ε = {epsilon:e} by more than {SPECKLE} levels, \
+         {in_window} of them in this window. Against a render at ε = {LARGE_EPSILON:e}, the \
+         showcase at its own ε has {left} pixels that differ by as much.*\n",
+        window.0,
+        window.1,
+        corner.0,
+        corner.1,
+        thousands(count as u64),
+        thousands(pixels),
+        100.0 * count as f64 / pixels as f64,
+    );
+    let md = dir.join("acne.md");
+    save_text(&text, &md)?;
+    written.push(md);
     Ok(written)
 }
 

@@ -13,6 +13,7 @@ use std::path::{Path, PathBuf};
 use ch06_path_tracing::sun::Sunlight;
 use ch06_path_tracing::{PathRender, Terms, run};
 use image::RgbImage;
+use raylab::frame::thousands;
 use raylab::linear_image::LinearImage;
 use raylab::scene::Object;
 use raylab::{Camera, Hit, NoProgress, Sampling, Scene, Settings, Vec3};
@@ -260,6 +261,63 @@ fn ratio_row(text: &mut String, name: &str, count: usize, a: f64, b: f64) {
 // ---------------------------------------------------------------------------
 // 1. Whitted against path traced
 
+/// The exposure of the comparison figures: the largest power of two in
+/// thirds of a stop, at most 1, at which no channel of any of `images`
+/// exceeds 1, so that nothing clips when it is encoded.
+pub fn exposure_without_clipping(images: &[&LinearImage]) -> f32 {
+    let brightest = images
+        .iter()
+        .flat_map(|image| image.pixels())
+        .map(|p| p.max_element())
+        .fold(0.0, f32::max);
+    (0..=60)
+        .map(|third: i32| 2f32.powf(-third as f32 / 3.0))
+        .find(|&exposure| brightest * exposure <= 1.0)
+        .unwrap_or(2f32.powi(-20))
+}
+
+/// `image` with every channel scaled by `exposure`.
+pub fn exposed(image: &LinearImage, exposure: f32) -> LinearImage {
+    let pixels = image.pixels().iter().map(|&p| p * exposure).collect();
+    LinearImage::from_pixels(image.width(), image.height(), pixels)
+}
+
+/// The channels of `image` above 1, which the encoding clips to white.
+pub fn clipped_channels(image: &LinearImage) -> usize {
+    image
+        .pixels()
+        .iter()
+        .map(|p| p.to_array().iter().filter(|&&c| c > 1.0).count())
+        .sum()
+}
+
+/// An exposure as the book states it: the factor and its stops.
+pub fn exposure_name(exposure: f32) -> String {
+    let thirds = (-3.0 * exposure.log2()).round() as i32;
+    let stops = match (thirds / 3, thirds % 3) {
+        (0, 0) => "no change".to_owned(),
+        (0, t) => format!("−{t}/3 stop"),
+        (s, 0) => format!("−{s} stop{}", if s == 1 { "" } else { "s" }),
+        (s, t) => format!("−{s} {t}/3 stops"),
+    };
+    format!("exposure ×{exposure:.2} ({stops})")
+}
+
+/// Where `image` clips: the pixels with a channel above 1 in red, the rest
+/// faded to grey.
+fn clip_mask(image: &LinearImage) -> RgbImage {
+    let srgb = image.to_srgb8();
+    RgbImage::from_fn(image.width(), image.height(), |x, y| {
+        if image.pixel(x, y).max_element() > 1.0 {
+            image::Rgb([220, 20, 60])
+        } else {
+            let p = srgb.get_pixel(x, y).0;
+            let grey = (u16::from(p[0]) + u16::from(p[1]) + u16::from(p[2])) / 3;
+            image::Rgb([(160 + grey / 3) as u8; 3])
+        }
+    })
+}
+
 fn comparison(
     dir: &Path,
     whitted: &LinearImage,
@@ -267,19 +325,65 @@ fn comparison(
     masks: &GroundMasks,
 ) -> Result<Vec<PathBuf>, JobError> {
     let (w, h) = (whitted.width(), whitted.height());
+    // One exposure for both, so that they compare, and low enough that
+    // nothing clips: at 1 the lit ground of the path-traced image is
+    // brighter than white.
+    let exposure = exposure_without_clipping(&[whitted, &path.image]);
+    let (whitted_exposed, path_exposed) =
+        (exposed(whitted, exposure), exposed(&path.image, exposure));
+    let clipped_before = clipped_channels(&path.image) + clipped_channels(whitted);
+    let clipped_after = clipped_channels(&path_exposed) + clipped_channels(&whitted_exposed);
+    let stated = exposure_name(exposure);
     let side_by_side = montage(
-        &format!("The lab scene, {w}×{h}: chapter 5 and chapter 6"),
+        &format!("The lab scene, {w}×{h}: chapter 5 and chapter 6, both at {stated}"),
         &[
             (
                 "chapter 5: Whitted, the lab's 5 rays per pixel",
-                &whitted.to_srgb8(),
+                &whitted_exposed.to_srgb8(),
             ),
             (
                 &format!("chapter 6: path traced, {SPP} paths per pixel, caustics"),
-                &path.image.to_srgb8(),
+                &path_exposed.to_srgb8(),
             ),
         ],
         2,
+    );
+    let clip_figure = montage(
+        "Where the encoding clips a channel to white (red)",
+        &[
+            (
+                "chapter 6 at exposure ×1, as its render.png",
+                &clip_mask(&path.image),
+            ),
+            (&format!("chapter 6 at {stated}"), &clip_mask(&path_exposed)),
+        ],
+        2,
+    );
+    let clipped_pixels = path
+        .image
+        .pixels()
+        .iter()
+        .filter(|p| p.max_element() > 1.0)
+        .count();
+    let exposure_text = format!(
+        "![Chapter 5's Whitted image and chapter 6's path-traced image, {w} × {h}, both at \
+         {stated}](figures/ch06-path-tracing/compare/whitted-and-path-traced.png)\n\n\
+         *Both images at one {stated}, the largest in thirds of a stop at which no channel of \
+         either is above 1: at ×1, {} channels ({} pixels of \
+         chapter 6's, mostly the lit ground's light squares) would clip to white, and at \
+         this exposure {clipped_after} do. The light of the two compares directly; only \
+         the brightness of the page is lower.*\n",
+        thousands(clipped_before as u64),
+        thousands(clipped_pixels as u64),
+    );
+    let render_text = format!(
+        "![Chapter 6: the lab scene, path traced, {w} × {h}, {SPP} paths per pixel, with \
+         caustics, at {stated}](figures/ch06-path-tracing/compare/path-traced-exposed.png)\n\n\
+         *Shown at {stated}, the exposure of every comparison with chapter 5 on these pages: \
+         the program's own `render.png` is at ×1, where {} of its pixels, most \
+         of the lit ground's light squares, are brighter than white in some channel and \
+         clip.*\n",
+        thousands(clipped_pixels as u64),
     );
     let difference = signed_difference(whitted, &path.image);
     let range = symmetric_range(&difference, 0.99);
@@ -305,13 +409,13 @@ fn comparison(
     let ratio = log2_ratio(whitted, &path.image);
     let ratio_figure = HeatmapFigure {
         title: "Path tracing over Whitted: how many times brighter",
-        caption: "Each pixel: log2 of chapter 6's luminance over chapter 5's, from −2 (a quarter \
-                  of the light, blue) to +2 (four times, red), clamped beyond; grey: the same. \
+        caption: "Each pixel: log2 of chapter 6's luminance over chapter 5's, from −3 (an eighth \
+                  of the light, blue) to +3 (eight times, red), clamped beyond; grey: the same. \
                   A ratio, so a dark pixel that doubles is as red as a bright one that doubles.",
         values: &ratio,
         width: w as usize,
         height: h as usize,
-        colour_scale: ColourScale::linear(-2.0, 2.0),
+        colour_scale: ColourScale::linear(-3.0, 3.0),
         colour_bar_label: "log2 (chapter 6 ÷ chapter 5)",
         colormap: Colormap::Diverging,
         pixel_scale: Some(1),
@@ -351,10 +455,17 @@ fn comparison(
         &[
             ("whitted-and-path-traced.png", &side_by_side),
             ("whitted.png", &whitted.to_srgb8()),
+            ("whitted-exposed.png", &whitted_exposed.to_srgb8()),
+            ("path-traced-exposed.png", &path_exposed.to_srgb8()),
+            ("clip-mask.png", &clip_figure),
             ("difference.png", &figure),
             ("ratio.png", &ratio_figure),
         ],
-        &[("difference.md", &text)],
+        &[
+            ("difference.md", &text),
+            ("exposure.md", &exposure_text),
+            ("render-exposed.md", &render_text),
+        ],
     )
 }
 
@@ -976,6 +1087,41 @@ mod tests {
         assert_eq!(crop.get_pixel(0, 0).0, [6, 0, 0]);
         assert_eq!(crop.get_pixel(2, 2).0, [6, 0, 0]);
         assert_eq!(crop.get_pixel(11, 5).0, [9, 1, 0]);
+    }
+
+    #[test]
+    fn the_exposure_is_the_largest_third_of_a_stop_that_keeps_every_channel_at_most_1() {
+        let image = |c: f32| LinearImage::from_pixels(1, 1, vec![Vec3::new(0.2, c, 0.1)]);
+        assert_eq!(exposure_without_clipping(&[&image(0.9)]), 1.0);
+        // 1.06 needs a third of a stop: 2^(−1/3) = 0.794, and 1.06 · 0.794 = 0.84.
+        let e = exposure_without_clipping(&[&image(0.5), &image(1.06)]);
+        assert!((e - 0.793_700_5).abs() < 1e-6, "{e}");
+        assert_eq!(clipped_channels(&image(1.06)), 1);
+        assert_eq!(clipped_channels(&exposed(&image(1.06), e)), 0);
+        assert_eq!(exposure_name(e), "exposure ×0.79 (−1/3 stop)");
+        assert_eq!(exposure_name(0.5), "exposure ×0.50 (−1 stop)");
+        assert_eq!(
+            exposure_name(2f32.powf(-5.0 / 3.0)),
+            "exposure ×0.31 (−1 2/3 stops)"
+        );
+    }
+
+    #[test]
+    fn the_comparison_at_its_exposure_clips_nothing_though_chapter_6_alone_would() {
+        let (w, h) = (80, 60);
+        let whitted = whitted_image(w, h);
+        let path = path_render(&with(size_flags(w, h, 16), &["--caustics"]), true).unwrap();
+        assert!(
+            clipped_channels(&path.image) > 0,
+            "at ×1 the lit ground clips"
+        );
+        let e = exposure_without_clipping(&[&whitted, &path.image]);
+        assert_eq!(clipped_channels(&exposed(&whitted, e)), 0);
+        assert_eq!(clipped_channels(&exposed(&path.image, e)), 0);
+        assert!(
+            e >= 0.5,
+            "the exposure is not made dark by a stray bright pixel: {e}"
+        );
     }
 
     #[test]

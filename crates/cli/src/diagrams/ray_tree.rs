@@ -7,7 +7,7 @@ use super::kind_colour;
 use raylab::Vec3;
 use raylab::camera::Camera;
 use raylab::ray::RayKind;
-use raylab::scene::Scene;
+use raylab::scene::{Object, Scene};
 use raylab::srgb::encode_channel;
 use raylab::trace::TracedRay;
 use raylab_plot::colour::{AXIS, FRAME, GRID, TEXT, TEXT_MUTED, WHITE, mix};
@@ -144,7 +144,7 @@ fn top_view() -> View {
 fn side_view(eye: Vec3, primary: Vec3) -> View {
     let heading = Vec3::new(primary.x, 0.0, primary.z).normalize_or(Vec3::NEG_Z);
     View {
-        name: "From the side (the vertical plane of the primary ray; spheres cut by it)",
+        name: "From the side (the vertical plane of the primary ray; dashed: a sphere off it)",
         across_label: "distance from the eye along the view",
         up_label: "y",
         flatten: Box::new(move |p| Vec2::new((p - eye).dot(heading), p.y)),
@@ -186,36 +186,81 @@ fn draw_panel(canvas: &mut Canvas, scene: &Scene, camera: &Camera, view: &View, 
             Anchor::TOP_RIGHT,
         );
     }
-    for sphere in scene.spheres() {
+    // Spheres a ray of the tree hits, so that no ray ends in empty space.
+    let hit: Vec<usize> = log
+        .iter()
+        .filter_map(|r| match r.hit {
+            Some((Object::Sphere(index), _)) => Some(index),
+            _ => None,
+        })
+        .collect();
+    let mut taken = Vec::new();
+    for (index, sphere) in scene.spheres().iter().enumerate() {
         let albedo = sphere.material.albedo().to_array().map(encode_channel);
         let centre = view.to_canvas(sphere.shape.centre);
         let mut radius = sphere.shape.radius;
+        let mut cut = true;
         if let Some((point, normal)) = view.plane {
-            // Only the circle where the plane cuts the sphere lies in it.
+            // Only the circle where the plane cuts the sphere lies in it; a
+            // sphere it misses is drawn, dashed, as its shadow on the
+            // plane, if a ray hits it.
             let off = (sphere.shape.centre - point).dot(normal);
-            if off.abs() >= radius {
+            if off.abs() < radius {
+                radius = (radius * radius - off * off).sqrt();
+            } else if hit.contains(&index) {
+                cut = false;
+            } else {
                 continue;
             }
-            radius = (radius * radius - off * off).sqrt();
         }
         let radius = radius * s;
-        canvas.circle(
-            centre,
-            radius,
-            Some(mix(albedo, WHITE, 0.55)),
-            Some((albedo, 1.5)),
-        );
+        if cut {
+            canvas.circle(
+                centre,
+                radius,
+                Some(mix(albedo, WHITE, 0.55)),
+                Some((albedo, 1.5)),
+            );
+        } else {
+            dashed_circle(canvas, centre, radius, albedo);
+        }
+        let name = if cut {
+            sphere.name.clone()
+        } else {
+            format!("{} (off the plane)", sphere.name)
+        };
         canvas.text(
             centre.0,
             centre.1,
-            &sphere.name,
+            &name,
             12.0,
             TEXT_MUTED,
             Anchor::MIDDLE_CENTRE,
         );
+        let w = canvas.text_width(&name, 12.0);
+        taken.push(Box2::around(centre, w + 6.0, 18.0));
     }
     for ray in log {
         draw_ray(canvas, view, ray);
+    }
+    // The depths last, each on a leader line beside its ray, where it hides
+    // no name and no other depth.
+    // Rays of several samples that run together share one badge.
+    let mut badged: Vec<(RayKind, u32, (f32, f32))> = Vec::new();
+    for ray in log.iter().filter(|r| r.kind != RayKind::Shadow) {
+        let length = ray.hit.map_or(SKY_STUB, |(_, t)| t);
+        let (a, b) = (
+            view.to_canvas(ray.ray.origin),
+            view.to_canvas(ray.ray.at(length)),
+        );
+        let middle = ((a.0 + b.0) / 2.0, (a.1 + b.1) / 2.0);
+        let twin = badged.iter().any(|&(kind, depth, m)| {
+            kind == ray.kind && depth == ray.depth && (m.0 - middle.0).hypot(m.1 - middle.1) < 24.0
+        });
+        if !twin {
+            draw_badge(canvas, view, ray, &mut taken);
+            badged.push((ray.kind, ray.depth, middle));
+        }
     }
     // The camera, and the direction of the sun from the panel's corner.
     let eye = view.to_canvas(camera.eye);
@@ -312,21 +357,92 @@ fn draw_ray(canvas: &mut Canvas, view: &View, ray: &TracedRay) {
     }
     let width = 1.0 + 3.0 * ray.weight;
     canvas.arrow(from, to, colour, width, 9.0);
-    // The depth, in the middle of the arrow, where there is room for it.
-    if (to.0 - from.0).hypot(to.1 - from.1) < 40.0 {
+}
+
+/// A rectangle on the canvas, for keeping labels apart.
+#[derive(Clone, Copy, Debug)]
+struct Box2 {
+    x: f32,
+    y: f32,
+    w: f32,
+    h: f32,
+}
+
+impl Box2 {
+    fn around((x, y): (f32, f32), w: f32, h: f32) -> Box2 {
+        Box2 {
+            x: x - w / 2.0,
+            y: y - h / 2.0,
+            w,
+            h,
+        }
+    }
+
+    fn overlaps(&self, other: &Box2) -> bool {
+        self.x < other.x + other.w
+            && other.x < self.x + self.w
+            && self.y < other.y + other.h
+            && other.y < self.y + self.h
+    }
+}
+
+/// The ray's depth in a badge, on a short leader line from a point of the
+/// arrow: the first spot, nearest the arrow's middle, that covers no name
+/// and no badge already placed. A ray too short to see gets none.
+fn draw_badge(canvas: &mut Canvas, view: &View, ray: &TracedRay, taken: &mut Vec<Box2>) {
+    let length = ray.hit.map_or(SKY_STUB, |(_, t)| t);
+    let from = view.to_canvas(ray.ray.origin);
+    let to = view.to_canvas(ray.ray.at(length));
+    let (dx, dy) = (to.0 - from.0, to.1 - from.1);
+    let span = dx.hypot(dy);
+    if span < 40.0 {
         return;
     }
-    let middle = ((from.0 + to.0) / 2.0, (from.1 + to.1) / 2.0);
-    let label = ray.depth.to_string();
-    canvas.circle(middle, 8.0, Some(WHITE), Some((colour, 1.0)));
+    let normal = (-dy / span, dx / span);
+    let spots = [0.5, 0.35, 0.65, 0.2, 0.8]
+        .into_iter()
+        .flat_map(|along| [22.0, -22.0, 36.0, -36.0].map(move |away: f32| (along, away)));
+    let mut chosen = None;
+    for (along, away) in spots {
+        let foot = (from.0 + dx * along, from.1 + dy * along);
+        let centre = (foot.0 + normal.0 * away, foot.1 + normal.1 * away);
+        let spot = Box2::around(centre, 18.0, 18.0);
+        if !taken.iter().any(|t| t.overlaps(&spot)) {
+            chosen = Some((foot, centre, spot));
+            break;
+        }
+    }
+    // Crowded everywhere: the nearest spot, even if it overlaps.
+    let (foot, centre, spot) = chosen.unwrap_or_else(|| {
+        let foot = (from.0 + dx * 0.5, from.1 + dy * 0.5);
+        let centre = (foot.0 + normal.0 * 22.0, foot.1 + normal.1 * 22.0);
+        (foot, centre, Box2::around(centre, 18.0, 18.0))
+    });
+    let colour = kind_colour(ray.kind);
+    canvas.stroke_line(foot.0, foot.1, centre.0, centre.1, colour, 1.0);
+    canvas.circle(centre, 8.0, Some(WHITE), Some((colour, 1.0)));
     canvas.text(
-        middle.0,
-        middle.1,
-        &label,
+        centre.0,
+        centre.1,
+        &ray.depth.to_string(),
         11.0,
         colour,
         Anchor::MIDDLE_CENTRE,
     );
+    taken.push(spot);
+}
+
+/// A circle drawn as dashes: a sphere the plane of the view does not cut.
+fn dashed_circle(canvas: &mut Canvas, centre: (f32, f32), radius: f32, colour: Rgb) {
+    let segments = ((radius * 0.6).ceil() as usize).clamp(12, 96) * 2;
+    let point = |k: usize| {
+        let a = std::f32::consts::TAU * k as f32 / segments as f32;
+        (centre.0 + radius * a.cos(), centre.1 + radius * a.sin())
+    };
+    for k in (0..segments).step_by(2) {
+        let (a, b) = (point(k), point(k + 1));
+        canvas.stroke_line(a.0, a.1, b.0, b.1, colour, 1.5);
+    }
 }
 
 fn draw_legend(canvas: &mut Canvas) {

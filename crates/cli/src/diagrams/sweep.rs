@@ -57,11 +57,7 @@ impl DepthSweep {
     /// The smallest depth after which no pixel changes by more than
     /// [`SETTLED`] levels, within the depths swept.
     pub fn settles_at(&self) -> u32 {
-        self.changes
-            .iter()
-            .rev()
-            .find(|c| c.max_change > SETTLED)
-            .map_or(1, |c| c.depth)
+        settles_at(&self.changes)
     }
 
     /// The sweep's conclusion in one sentence, read off the same numbers as
@@ -228,6 +224,42 @@ impl DepthSweep {
     }
 }
 
+/// The smallest depth after which no pixel changes by more than
+/// [`SETTLED`] levels, read off a sweep's changes (1 if none is larger).
+pub fn settles_at(changes: &[Change]) -> u32 {
+    changes
+        .iter()
+        .rev()
+        .find(|c| c.max_change > SETTLED)
+        .map_or(1, |c| c.depth)
+}
+
+/// A sweep's changes read back from the `changes.csv` it wrote, so that a
+/// figure drawn later marks the depths the sweep measured.
+pub fn changes_from_csv(text: &str) -> Result<Vec<Change>, String> {
+    let mut lines = text.lines();
+    let header = "depth,changed_pixels,changed_over_3,max_change";
+    if lines.next() != Some(header) {
+        return Err(format!("a sweep's changes.csv starts with '{header}'"));
+    }
+    lines
+        .filter(|line| !line.is_empty())
+        .map(|line| {
+            let bad = || format!("'{line}' is not a row of a sweep's changes.csv");
+            let fields: Vec<&str> = line.split(',').collect();
+            let [depth, changed, over_3, max] = fields[..] else {
+                return Err(bad());
+            };
+            Ok(Change {
+                depth: depth.parse().map_err(|_| bad())?,
+                changed_pixels: changed.parse().map_err(|_| bad())?,
+                changed_over_3: over_3.parse().map_err(|_| bad())?,
+                max_change: max.parse().map_err(|_| bad())?,
+            })
+        })
+        .collect()
+}
+
 /// The image scaled down to at most 320 pixels wide, averaging as it goes.
 fn thumbnail(image: &RgbImage) -> RgbImage {
     const WIDTH: u32 = 320;
@@ -281,6 +313,17 @@ mod tests {
         assert_eq!(
             sweep.csv().lines().take(2).collect::<Vec<_>>(),
             ["depth,changed_pixels,changed_over_3,max_change", "2,8,8,40"]
+        );
+        assert_eq!(changes_from_csv(&sweep.csv()), Ok(sweep.changes.clone()));
+    }
+
+    #[test]
+    fn a_changes_file_that_is_not_a_sweeps_is_refused_with_its_line() {
+        assert!(changes_from_csv("depth,x\n").is_err());
+        let text = "depth,changed_pixels,changed_over_3,max_change\n2,8,8\n";
+        assert_eq!(
+            changes_from_csv(text),
+            Err("'2,8,8' is not a row of a sweep's changes.csv".to_owned())
         );
     }
 }

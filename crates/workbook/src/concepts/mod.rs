@@ -207,8 +207,11 @@ pub const NAMES: [&str; 8] = [
     "weights.png",
 ];
 
-/// Write every concept diagram into `dir`.
-pub fn make_concepts(dir: &Path) -> Result<Vec<PathBuf>, JobError> {
+/// Write every concept diagram into `dir`; the weights figure marks the
+/// depths at which the depth sweeps under `figures` settled, and its line
+/// for the book goes into `weights.md`.
+pub fn make_concepts(dir: &Path, figures: &Path) -> Result<Vec<PathBuf>, JobError> {
+    let settled = weights::measured(figures)?;
     raylab_cli::prepare_out_dir(dir)?;
     let images = [
         camera::figure(),
@@ -218,7 +221,7 @@ pub fn make_concepts(dir: &Path) -> Result<Vec<PathBuf>, JobError> {
         lambert::figure(),
         offset::figure(),
         srgb::figure(),
-        weights::figure(),
+        weights::figure(&settled),
     ];
     let mut written = Vec::new();
     for (name, image) in NAMES.iter().zip(&images) {
@@ -226,5 +229,8 @@ pub fn make_concepts(dir: &Path) -> Result<Vec<PathBuf>, JobError> {
         save_png(image, &path)?;
         written.push(path);
     }
+    let caption = dir.join("weights.md");
+    raylab_cli::output::save_text(&weights::caption(&settled), &caption)?;
+    written.push(caption);
     Ok(written)
 }
