@@ -23,7 +23,7 @@ use std::time::Duration;
 
 use raylab::frame::thousands;
 use raylab::{Settings, Step};
-use raylab_cli::output::save_text;
+use raylab_cli::output::{save_png, save_text};
 use raylab_cli::{self as cli, Chapter, CliError, Options};
 
 /// Why the main job stopped.
@@ -223,10 +223,13 @@ pub fn make_figures(
     let speed = figures.join("speed.md");
     save_text(&speed_table(&timings), &speed)?;
     written.push(speed);
-    let pairs = speed::pairs_table(&speed::measure(size)?, &speed::machine());
+    let pairs = speed::measure(size)?;
     let pairs_path = figures.join("speed-pairs.md");
-    save_text(&pairs, &pairs_path)?;
+    save_text(&speed::pairs_table(&pairs, &speed::machine()), &pairs_path)?;
     written.push(pairs_path);
+    let pairs_figure = figures.join("speed-pairs.png");
+    save_png(&speed::pairs_figure(&pairs), &pairs_figure)?;
+    written.push(pairs_figure);
     // Chapter 10's frames on this machine's GPU adapter, if it has one, at
     // half the size each way: lavapipe takes seconds per 800 × 600 frame.
     let gpu_size = Size {

@@ -187,6 +187,59 @@ pub fn measure(size: Size) -> Result<Vec<Pair>, CliError> {
     ])
 }
 
+/// A figure's points, `(x, y)`.
+pub type Points = Vec<(f64, f64)>;
+
+/// Each pair's speed, one ray (or path) at a time and eight at a time, in
+/// millions of rays per second, at its chapter's number: chapters 1-5 for
+/// the Whitted pairs (their eight-at-a-time twin is chapter 7), 6 for the
+/// path tracers' (its twin is chapter 8).
+pub fn pair_speeds(pairs: &[Pair]) -> (Points, Points) {
+    let mrays = |rays: u64, time: Duration| rays as f64 / time.as_secs_f64().max(1e-12) / 1e6;
+    let at = |i: usize| (i + 1) as f64;
+    let one = pairs.iter().enumerate();
+    (
+        one.clone()
+            .map(|(i, p)| (at(i), mrays(p.rays, p.first_median)))
+            .collect(),
+        one.map(|(i, p)| (at(i), mrays(p.rays, p.second_median)))
+            .collect(),
+    )
+}
+
+/// The pairs as a figure: rays per second, one at a time against eight at
+/// a time, per chapter (what the table beside it lists).
+pub fn pairs_figure(pairs: &[Pair]) -> image::RgbImage {
+    use raylab_plot::colour::series_colour;
+    use raylab_plot::{Corner, LinePlot, Series};
+    let (one, eight) = pair_speeds(pairs);
+    let speeds = || eight.iter().chain(&one).map(|p| p.1);
+    let (low, high) = (
+        speeds().fold(f64::MAX, f64::min),
+        speeds().fold(1.0, f64::max),
+    );
+    LinePlot::new("Rays per second, warm, measured in rounds")
+        .x_label("chapter (1-5 Whitted, 6 path tracing)")
+        .y_label("millions of rays per second")
+        .integer_x_ticks()
+        .x_range(0.5, one.len() as f64 + 0.5)
+        // On a log scale the gap between the lines is the ratio itself.
+        .log_y(low / 2.0)
+        .y_range(low / 2.0, high * 2.0)
+        .series(Series::new(
+            "one at a time (chapters 1-6)",
+            series_colour(0),
+            one,
+        ))
+        .series(Series::new(
+            "eight at a time (chapter 7 --like, and chapter 8)",
+            series_colour(2),
+            eight,
+        ))
+        .legend(Corner::TopRight)
+        .render(900, 520)
+}
+
 /// The pairs as the book's table, with the machine they ran on.
 pub fn pairs_table(pairs: &[Pair], machine: &str) -> String {
     let mut text = String::from(
@@ -250,6 +303,51 @@ mod tests {
             table.contains("a test processor (x86_64), 2 cores"),
             "{table}"
         );
+    }
+
+    #[test]
+    fn a_pair_of_11_6_million_rays_in_130_ms_runs_at_89_3_mrays_per_second() {
+        let pair = |first_ms, second_ms| Pair {
+            what: String::new(),
+            first: "ch05-antialiasing",
+            second: "ch07 --like ch05".into(),
+            rays: 11_611_362,
+            first_median: Duration::from_millis(first_ms),
+            second_median: Duration::from_millis(second_ms),
+        };
+        let (one, eight) = pair_speeds(&[pair(130, 29), pair(100, 50)]);
+        // 11,611,362 rays / 0.130 s = 89.318 Mrays/s; / 0.029 s = 400.39.
+        assert_eq!(one[0].0, 1.0);
+        assert!((one[0].1 - 89.318).abs() < 1e-3, "{one:?}");
+        assert!((eight[0].1 - 400.392).abs() < 1e-3, "{eight:?}");
+        assert_eq!(eight[1].0, 2.0);
+        assert!((eight[1].1 - 232.227).abs() < 1e-3, "{eight:?}");
+    }
+
+    #[test]
+    fn the_pairs_figure_draws_both_lines_at_its_size() {
+        let pair = |first, second, ms_one, ms_eight| Pair {
+            what: String::new(),
+            first,
+            second,
+            rays: 1_000_000,
+            first_median: Duration::from_millis(ms_one),
+            second_median: Duration::from_millis(ms_eight),
+        };
+        let pairs = [
+            pair("ch01-ray-cast", "ch07 --like ch01".into(), 50, 12),
+            pair("ch06-path-tracing", "ch08-eight-paths".into(), 60, 35),
+        ];
+        let figure = pairs_figure(&pairs);
+        assert_eq!(figure.dimensions(), (900, 520));
+        // Both series' colours are drawn.
+        for k in [0, 2] {
+            let colour = raylab_plot::colour::series_colour(k);
+            assert!(
+                figure.pixels().any(|p| p.0 == colour),
+                "series {k} is not drawn"
+            );
+        }
     }
 
     #[test]
