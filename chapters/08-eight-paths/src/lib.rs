@@ -22,12 +22,14 @@
 //! - [`starts`]: the row's next samples, made ready eight at a time;
 //! - [`terms`]: the five terms of eight paths;
 //! - [`window`]: finished samples put back in order;
-//! - [`render`]: every row on every core, in chapter 6's frame.
+//! - [`render`]: every row on every core, in chapter 6's frame;
+//! - [`lane_use`]: how many lanes each step of a bounce runs for.
 //!
 //! The scene, the camera, the sky and the optics in lanes are
 //! `raylab-lanes'`, shared with chapter 7. The program is chapter 6's, with
 //! this renderer: the same flags, the same files.
 
+pub mod lane_use;
 pub mod paths;
 pub mod render;
 pub mod starts;
@@ -37,7 +39,7 @@ pub mod window;
 use ch06_path_tracing::PathProgram;
 use raylab_cli::Program;
 
-pub use render::{render_eight, render_eight_with};
+pub use render::{lane_use, render_eight, render_eight_with};
 
 /// Chapter 8's program: chapter 6's, with its defaults, rendered eight
 /// paths at a time.

@@ -25,6 +25,7 @@ use raylab_lanes::{
 };
 use wide::{CmpGt, CmpLe, CmpLt, CmpNe, f32x8};
 
+use crate::lane_use::{LaneUse, Stage};
 use crate::terms::TermsX8;
 
 /// Eight paths between two bounces.
@@ -50,6 +51,8 @@ pub struct Paths {
     /// takes a new sample; all eight side by side, so that the lanes that
     /// draw at the same point draw together.
     pub random: Pcg32x8,
+    /// How many lanes each step ran for (counted, never read by the paths).
+    pub lane_use: LaneUse,
 }
 
 /// Eight idle lanes (each takes a path with [`Paths::start`]).
@@ -69,6 +72,7 @@ impl Default for Paths {
                 sample_hashes([PixelHash::new(0, (0, 0)); LANES], [0; LANES]),
                 Stream::Path,
             ),
+            lane_use: LaneUse::default(),
         }
     }
 }
@@ -105,16 +109,19 @@ impl Paths {
         self.hits += ones(active);
         self.rays += ones(active);
         let (o, d) = (self.origin, self.direction);
+        self.lane_use.note(Stage::Trace, active);
         let hits = scene.nearest(o, d);
         // Mask: one hit more than the depth allows, where only whether the
         // path escapes matters (the scalar code asks `any_hit` there).
         let last = self.hits.cmp_gt(f32x8::splat(tracer.max_depth as f32));
         let escaped = active & !last.blend(hits.any, hits.hit);
         if escaped.any() {
+            self.lane_use.note(Stage::Escape, escaped);
             self.escape(tracer, escaped);
         }
         let shading = active & !last & hits.hit;
         if shading.any() {
+            self.lane_use.note(Stage::Surface, shading);
             let surfaces = scene.surfaces(o, d, &hits);
             self.scatter(tracer, scene, &hits, &surfaces, shading);
         }
@@ -186,11 +193,13 @@ impl Paths {
         let diffuse = shading & !(mirror | refraction);
         let specular = shading & (mirror | refraction);
         // Where each path goes next, from a diffuse or a specular vertex.
-        let from_diffuse = diffuse
-            .any()
-            .then(|| self.diffuse(tracer, scene, s, diffuse));
+        let from_diffuse = diffuse.any().then(|| {
+            self.lane_use.note(Stage::Diffuse, diffuse);
+            self.diffuse(tracer, scene, s, diffuse)
+        });
         let mut from_specular = None;
         if specular.any() {
+            self.lane_use.note(Stage::Specular, specular);
             let reflected = reflect(d, nf);
             let mut direction = reflected;
             if refraction.any() {
@@ -253,6 +262,7 @@ impl Paths {
         // Mask: the surface faces the sun, so a shadow ray is traced.
         let lit = diffuse & cos.cmp_gt(f32x8::ZERO);
         if lit.any() {
+            self.lane_use.note(Stage::ShadowRay, lit);
             self.rays += ones(lit);
             let origin = s.point + to_sun * tracer.epsilon;
             let open = lit & !scene.any(origin, to_sun, lit);
@@ -284,6 +294,7 @@ impl Paths {
         if bits == 0 {
             return;
         }
+        self.lane_use.note(Stage::Caustics, ground);
         let points = s.point.to_lanes();
         let hits = self.hits.to_array();
         let mut irradiance = [Vec3::ZERO; LANES];

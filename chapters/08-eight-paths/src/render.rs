@@ -10,6 +10,7 @@ use raylab_lanes::{CameraX8, LANES, SceneQueryX8, SceneX8, SpheresX8, lanes_of, 
 use rayon::prelude::*;
 use wide::f32x8;
 
+use crate::lane_use::LaneUse;
 use crate::paths::Paths;
 use crate::starts::Starts;
 use crate::window::Window;
@@ -45,6 +46,37 @@ pub fn render_eight_with<Q: SceneQueryX8>(
     render_with(scene, query, settings, |tracer, rows| {
         render_rows(tracer, &lanes, camera, settings, progress, rows)
     })
+}
+
+/// How busy the lanes were in [`render_eight`]'s render of the same image,
+/// step by step (for the book's figure). It renders the rows one after
+/// the other on one core, with one set of eight paths, as one of
+/// `render_eight`'s tasks does: the same paths, counted.
+pub fn lane_use(scene: &Scene, camera: &Camera, settings: &PathSettings) -> LaneUse {
+    let spheres = SpheresX8::new(scene);
+    let lanes = SceneX8::new(scene);
+    let mut used = LaneUse::default();
+    render_with(scene, &spheres, settings, |tracer, rows| {
+        let camera = CameraX8::new(camera, settings.width, settings.height);
+        let (mut paths, mut window, mut starts) = Default::default();
+        let mut totals = (0, 0);
+        for (j, mut row) in rows.into_iter().enumerate() {
+            Rows {
+                tracer,
+                scene: &lanes,
+                camera: &camera,
+                settings,
+                paths: &mut paths,
+                window: &mut window,
+                starts: &mut starts,
+            }
+            .render_row(j as u32, &mut row);
+            totals = (totals.0 + row.rays, totals.1 + row.non_finite);
+        }
+        used = paths.lane_use;
+        totals
+    });
+    used
 }
 
 /// Every row of `rows` (row `j`'s images) on every core, telling

@@ -9,6 +9,7 @@ pub mod concepts;
 pub mod extras;
 pub mod gpu_speed;
 pub mod lab_page;
+pub mod lane_use;
 pub mod learn_figures;
 pub mod many_spheres;
 pub mod math;
@@ -223,6 +224,10 @@ pub fn make_figures(
     let speed = figures.join("speed.md");
     save_text(&speed_table(&timings), &speed)?;
     written.push(speed);
+    written.extend(lane_use::make_figure(
+        &figures.join(ch08_eight_paths::PROGRAM.program.binary),
+        size,
+    )?);
     let pairs = speed::measure(size)?;
     let pairs_path = figures.join("speed-pairs.md");
     save_text(&speed::pairs_table(&pairs, &speed::machine()), &pairs_path)?;
