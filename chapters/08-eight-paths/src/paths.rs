@@ -109,19 +109,16 @@ impl Paths {
         self.hits += ones(active);
         self.rays += ones(active);
         let (o, d) = (self.origin, self.direction);
-        self.lane_use.note(Stage::Trace, active);
         let hits = scene.nearest(o, d);
         // Mask: one hit more than the depth allows, where only whether the
         // path escapes matters (the scalar code asks `any_hit` there).
         let last = self.hits.cmp_gt(f32x8::splat(tracer.max_depth as f32));
         let escaped = active & !last.blend(hits.any, hits.hit);
         if escaped.any() {
-            self.lane_use.note(Stage::Escape, escaped);
             self.escape(tracer, escaped);
         }
         let shading = active & !last & hits.hit;
         if shading.any() {
-            self.lane_use.note(Stage::Surface, shading);
             let surfaces = scene.surfaces(o, d, &hits);
             self.scatter(tracer, scene, &hits, &surfaces, shading);
         }
@@ -135,6 +132,7 @@ impl Paths {
     /// The light of the paths in `escaped`, which left the scene: the sky,
     /// and the sun's disc where no diffuse vertex has counted it already.
     fn escape(&mut self, tracer: &PathTracer<'_, impl SceneQuery + ?Sized>, escaped: f32x8) {
+        self.lane_use.note(Stage::Escape, escaped);
         let d = self.direction;
         let sky = SkyX8::new(&tracer.scene.sky).radiance(d);
         let k = self.diffuse_bounces;
@@ -171,6 +169,7 @@ impl Paths {
         s: &Surfaces,
         shading: f32x8,
     ) {
+        self.lane_use.note(Stage::Surface, shading);
         let (o, d) = (self.origin, self.direction);
         let nf = s.facing_normal;
         // The lobe, only where there is a choice (a matte surface draws no

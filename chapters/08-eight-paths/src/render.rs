@@ -10,7 +10,7 @@ use raylab_lanes::{CameraX8, LANES, SceneQueryX8, SceneX8, SpheresX8, lanes_of, 
 use rayon::prelude::*;
 use wide::f32x8;
 
-use crate::lane_use::LaneUse;
+use crate::lane_use::{LaneUse, Stage};
 use crate::paths::Paths;
 use crate::starts::Starts;
 use crate::window::Window;
@@ -162,6 +162,7 @@ impl<Q: SceneQuery> Rows<'_, '_, Q> {
             }
             // One bounce of every path in flight; the ones that ended hand
             // their light to the window, which sums what is complete.
+            self.paths.lane_use.note(Stage::Trace, self.paths.active);
             let ended = self.paths.bounce(self.tracer, self.scene).move_mask() as u32;
             if ended != 0 {
                 let rays = self.paths.rays.as_array_ref();
