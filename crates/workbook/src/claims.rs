@@ -18,7 +18,7 @@ use std::path::Path;
 use raylab::Step;
 use raylab::probe;
 use raylab_cli::probe_text::{self, Listing};
-use raylab_cli::{Chapter, CliError, Options};
+use raylab_cli::{Chapter, CliError};
 
 use crate::Size;
 
@@ -190,18 +190,9 @@ pub fn check_pages(src: &Path, probe_of: impl Fn(&str) -> Option<String>) -> Vec
 /// The text a chapter's program writes to `probe.txt` for its own probe
 /// at `size`, without rendering the image: the tree of one pixel.
 pub fn probe_text<S: Step>(chapter: &Chapter<S>, size: Size) -> Result<String, CliError> {
-    let args = [
-        chapter.binary.to_owned(),
-        format!("--width={}", size.width),
-        format!("--height={}", size.height),
-    ];
-    let options = Options::parse_for(chapter, args).map_err(|e| CliError::Usage(e.to_string()))?;
-    let settings = options.settings()?;
-    let settings = raylab::Settings {
-        sampling: settings.sampling.with_lab_five(chapter.step.lab_five()),
-        ..settings
-    };
-    let (scene, camera) = options.common.load_scene()?;
+    let settings = crate::speed::settings_of(chapter, size)?;
+    // The chapter's defaults render the lab scene.
+    let (scene, camera) = (raylab::Scene::lab(), raylab::Camera::lab());
     let pixel = chapter
         .probe
         .pixel(&scene, &camera, size.width, size.height)

@@ -90,7 +90,7 @@ fn interleave(rounds: usize, mut a: impl FnMut(), mut b: impl FnMut()) -> (Durat
 }
 
 /// A Whitted chapter's default settings at `size`.
-fn settings_of<S: Step>(chapter: &Chapter<S>, size: Size) -> Result<Settings, CliError> {
+pub(crate) fn settings_of<S: Step>(chapter: &Chapter<S>, size: Size) -> Result<Settings, CliError> {
     let args = [
         chapter.binary.to_owned(),
         format!("--width={}", size.width),
