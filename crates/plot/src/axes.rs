@@ -19,6 +19,7 @@ use image::RgbImage;
 
 use super::canvas::Canvas;
 use super::colour::{AXIS, FRAME, GRID, Rgb, TEXT, WHITE};
+use super::label_box::LabelBox;
 use super::scale::{Scale, decade_range, padded_range};
 use super::text::{Anchor, line_metrics, text_width};
 use super::ticks::Ticks;
@@ -494,7 +495,7 @@ impl LinePlot {
     }
 
     /// Draws the legend (if any series is named) and returns its box.
-    fn draw_legend(&self, canvas: &mut Canvas, frame: &Frame) -> Option<Box2> {
+    fn draw_legend(&self, canvas: &mut Canvas, frame: &Frame) -> Option<LabelBox> {
         let corner = self.legend?;
         let named: Vec<&Series> = self.series.iter().filter(|s| !s.name.is_empty()).collect();
         if named.is_empty() {
@@ -536,16 +537,16 @@ impl LinePlot {
             let (name, anchor) = (&series.name, Anchor::MIDDLE_LEFT);
             canvas.text(end + 8.0, row_y, name, LEGEND_SIZE, TEXT, anchor);
         }
-        Some(Box2 { x, y, w, h })
+        Some(LabelBox { x, y, w, h })
     }
 
     /// Writes each marker's label near the top of its line, on a pale
     /// backing so grid lines do not cut through the letters. Labels move
     /// down out of the way of the legend and of each other.
-    fn draw_marker_labels(&self, canvas: &mut Canvas, frame: &Frame, legend: Option<Box2>) {
+    fn draw_marker_labels(&self, canvas: &mut Canvas, frame: &Frame, legend: Option<LabelBox>) {
         let metrics = line_metrics(LEGEND_SIZE);
         let h = metrics.line_height();
-        let mut taken: Vec<Box2> = legend.into_iter().collect();
+        let mut taken: Vec<LabelBox> = legend.into_iter().collect();
         for marker in &self.markers {
             let line_x = frame.x_pixel(marker.x);
             if marker.label.is_empty() || line_x < frame.left || line_x > frame.right {
@@ -564,7 +565,7 @@ impl LinePlot {
             let spot = rows
                 .take_while(|&y| y + h <= frame.bottom)
                 .flat_map(|y| {
-                    sides.iter().map(move |&x| Box2 {
+                    sides.iter().map(move |&x| LabelBox {
                         x: x - 3.0,
                         y,
                         w: w + 6.0,
@@ -610,24 +611,6 @@ fn draw_axes(canvas: &mut Canvas, layout: &Layout) {
 /// covers exactly one row or column instead of blurring over two.
 fn crisp(v: f32) -> f32 {
     v.floor() + 0.5
-}
-
-/// A rectangle, for keeping labels from landing on top of each other.
-#[derive(Clone, Copy, Debug, PartialEq)]
-struct Box2 {
-    x: f32,
-    y: f32,
-    w: f32,
-    h: f32,
-}
-
-impl Box2 {
-    fn overlaps(&self, other: &Box2) -> bool {
-        self.x < other.x + other.w
-            && other.x < self.x + self.w
-            && self.y < other.y + other.h
-            && other.y < self.y + self.h
-    }
 }
 
 /// The outcome of laying a plot out: where the data goes, and the ticks.

@@ -36,20 +36,26 @@ impl GpuTiming {
     }
 }
 
+/// The settings of the chapter `like` imitates, with its defaults, at `size`.
+fn chapter_settings(like: Like, size: Size) -> Result<Settings, String> {
+    let raylab_like::Defaults { max_depth, spp, .. } = like.defaults();
+    Ok(Settings {
+        width: size.width,
+        height: size.height,
+        max_depth,
+        epsilon: 1e-4,
+        sampling: Sampling::new(spp, None, 0).map_err(|e| e.to_string())?,
+    })
+}
+
 /// Chapter 10's frame of the lab scene as chapter 4 renders it, and the
 /// CPU's image of the same at `size`: `(gpu, cpu)`, 8-bit sRGB. `Err` is
 /// the one line that says why there is none (no adapter, a failed frame).
 pub fn chapter4_frames(size: Size) -> Result<(String, RgbImage, RgbImage), String> {
     let gpu = Gpu::new().map_err(|e| e.to_string())?;
     let like = Like::Refraction;
-    let raylab_like::Defaults { max_depth, spp, .. } = like.defaults();
-    let settings = Settings {
-        width: size.width,
-        height: size.height,
-        max_depth,
-        epsilon: 1e-4,
-        sampling: Sampling::new(spp, None, 0).map_err(|e| e.to_string())?,
-    };
+    let settings = chapter_settings(like, size)?;
+    let max_depth = settings.max_depth;
     let scene = (Scene::lab(), Camera::lab());
     let tracer = gpu
         .compile(&Source::built_in(), max_depth)
@@ -148,14 +154,8 @@ pub fn measure(size: Size) -> Result<(String, Vec<GpuTiming>), String> {
     let scene = (Scene::lab(), Camera::lab());
     let mut timings = Vec::new();
     for like in Like::ALL {
-        let raylab_like::Defaults { max_depth, spp, .. } = like.defaults();
-        let settings = Settings {
-            width: size.width,
-            height: size.height,
-            max_depth,
-            epsilon: 1e-4,
-            sampling: Sampling::new(spp, None, 0).map_err(|e| e.to_string())?,
-        };
+        let settings = chapter_settings(like, size)?;
+        let max_depth = settings.max_depth;
         let tracer = gpu
             .compile(&Source::built_in(), max_depth)
             .map_err(|e| e.to_string())?;

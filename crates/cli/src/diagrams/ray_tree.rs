@@ -10,6 +10,7 @@ use raylab::ray::RayKind;
 use raylab::scene::{Object, Scene};
 use raylab::srgb::encode_channel;
 use raylab::trace::TracedRay;
+use raylab_plot::LabelBox;
 use raylab_plot::colour::{AXIS, FRAME, GRID, TEXT, TEXT_MUTED, WHITE, mix};
 use raylab_plot::{Anchor, Canvas, Rgb};
 
@@ -238,7 +239,7 @@ fn draw_panel(canvas: &mut Canvas, scene: &Scene, camera: &Camera, view: &View, 
             Anchor::MIDDLE_CENTRE,
         );
         let w = canvas.text_width(&name, 12.0);
-        taken.push(Box2::around(centre, w + 6.0, 18.0));
+        taken.push(LabelBox::around(centre, w + 6.0, 18.0));
     }
     for ray in log {
         draw_ray(canvas, view, ray);
@@ -359,37 +360,10 @@ fn draw_ray(canvas: &mut Canvas, view: &View, ray: &TracedRay) {
     canvas.arrow(from, to, colour, width, 9.0);
 }
 
-/// A rectangle on the canvas, for keeping labels apart.
-#[derive(Clone, Copy, Debug)]
-struct Box2 {
-    x: f32,
-    y: f32,
-    w: f32,
-    h: f32,
-}
-
-impl Box2 {
-    fn around((x, y): (f32, f32), w: f32, h: f32) -> Box2 {
-        Box2 {
-            x: x - w / 2.0,
-            y: y - h / 2.0,
-            w,
-            h,
-        }
-    }
-
-    fn overlaps(&self, other: &Box2) -> bool {
-        self.x < other.x + other.w
-            && other.x < self.x + self.w
-            && self.y < other.y + other.h
-            && other.y < self.y + self.h
-    }
-}
-
 /// The ray's depth in a badge, on a short leader line from a point of the
 /// arrow: the first spot, nearest the arrow's middle, that covers no name
 /// and no badge already placed. A ray too short to see gets none.
-fn draw_badge(canvas: &mut Canvas, view: &View, ray: &TracedRay, taken: &mut Vec<Box2>) {
+fn draw_badge(canvas: &mut Canvas, view: &View, ray: &TracedRay, taken: &mut Vec<LabelBox>) {
     let length = ray.hit.map_or(SKY_STUB, |(_, t)| t);
     let from = view.to_canvas(ray.ray.origin);
     let to = view.to_canvas(ray.ray.at(length));
@@ -406,7 +380,7 @@ fn draw_badge(canvas: &mut Canvas, view: &View, ray: &TracedRay, taken: &mut Vec
     for (along, away) in spots {
         let foot = (from.0 + dx * along, from.1 + dy * along);
         let centre = (foot.0 + normal.0 * away, foot.1 + normal.1 * away);
-        let spot = Box2::around(centre, 18.0, 18.0);
+        let spot = LabelBox::around(centre, 18.0, 18.0);
         if !taken.iter().any(|t| t.overlaps(&spot)) {
             chosen = Some((foot, centre, spot));
             break;
@@ -416,7 +390,7 @@ fn draw_badge(canvas: &mut Canvas, view: &View, ray: &TracedRay, taken: &mut Vec
     let (foot, centre, spot) = chosen.unwrap_or_else(|| {
         let foot = (from.0 + dx * 0.5, from.1 + dy * 0.5);
         let centre = (foot.0 + normal.0 * 22.0, foot.1 + normal.1 * 22.0);
-        (foot, centre, Box2::around(centre, 18.0, 18.0))
+        (foot, centre, LabelBox::around(centre, 18.0, 18.0))
     });
     let colour = kind_colour(ray.kind);
     canvas.stroke_line(foot.0, foot.1, centre.0, centre.1, colour, 1.0);
