@@ -14,6 +14,7 @@ pub mod learn_figures;
 pub mod many_spheres;
 pub mod math;
 pub mod measure;
+pub mod parts;
 pub mod path_tracing;
 pub mod penumbra;
 pub mod speed;
@@ -22,6 +23,7 @@ pub mod waves;
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
+pub use parts::Parts;
 use raylab::frame::thousands;
 use raylab::{Settings, Step};
 use raylab_cli::output::{save_png, save_text};
@@ -174,108 +176,137 @@ pub fn make_figures(
     scenes: &Path,
     size: Size,
     quiet: bool,
+    parts: &mut Parts,
 ) -> Result<Vec<PathBuf>, JobError> {
     let mut written = Vec::new();
     let mut timings = Vec::new();
-    let t = &mut timings;
-    written.extend(chapter_figures(
-        &ch01_ray_cast::CHAPTER,
-        figures,
-        size,
-        quiet,
-        t,
-    )?);
-    written.extend(chapter_figures(
-        &ch02_shadows::CHAPTER,
-        figures,
-        size,
-        quiet,
-        t,
-    )?);
-    written.extend(chapter_figures(
-        &ch03_reflection::CHAPTER,
-        figures,
-        size,
-        quiet,
-        t,
-    )?);
-    written.extend(chapter_figures(
-        &ch04_refraction::CHAPTER,
-        figures,
-        size,
-        quiet,
-        t,
-    )?);
-    written.extend(chapter_figures(
-        &ch05_antialiasing::CHAPTER,
-        figures,
-        size,
-        quiet,
-        t,
-    )?);
-    written.extend(path_tracing_figures(figures, scenes, size, quiet)?);
-    written.extend(chapter_figures(
-        &ch07_eight_rays::chapter(ch07_eight_rays::Like::AntiAliasing),
-        figures,
-        size,
-        quiet,
-        t,
-    )?);
-    let speed = figures.join("speed.md");
-    save_text(&speed_table(&timings), &speed)?;
-    written.push(speed);
-    written.extend(lane_use::make_figure(
-        &figures.join(ch08_eight_paths::PROGRAM.program.binary),
-        size,
-    )?);
-    let pairs = speed::measure(size)?;
-    let pairs_path = figures.join("speed-pairs.md");
-    save_text(&speed::pairs_table(&pairs, &speed::machine()), &pairs_path)?;
-    written.push(pairs_path);
-    let pairs_figure = figures.join("speed-pairs.png");
-    save_png(&speed::pairs_figure(&pairs), &pairs_figure)?;
-    written.push(pairs_figure);
-    // Chapter 10's frames on this machine's GPU adapter, if it has one, at
-    // half the size each way: lavapipe takes seconds per 800 × 600 frame.
-    let gpu_size = Size {
-        width: size.width / 2,
-        height: size.height / 2,
-    };
-    let gpu = gpu_speed::measure(gpu_size);
-    if let Err(why) = &gpu {
-        println!("workbook: chapter 10's speed table says there is no GPU adapter: {why}");
-    }
-    let gpu_path = figures.join("speed-gpu.md");
-    save_text(&gpu_speed::table(gpu_size, &gpu), &gpu_path)?;
-    written.push(gpu_path);
-    written.extend(gpu_speed::figures(&figures.join("ch10-gpu"), gpu_size)?);
-    written.extend(extras::make_extras(&figures.join("extras"), size)?);
-    written.extend(antialiasing::make_figures(&figures.join("sampling"), size)?);
-    written.extend(learn_figures::make_learn_figures(&figures.join("learn"))?);
-    // The lab in the browser: chapter 10's shader, its blank, the packed
-    // scenes and the CPU renders its page judges by.
-    written.extend(lab_page::make_lab_page(
-        &figures.join("lab-in-browser"),
-        scenes,
-    )?);
-    // The explorer's screenshots, made through its own state and scripts
-    // without a window, at its window's size.
-    written.extend(raylab_explore::figures::write_book_figures(
-        &figures.join("explorer"),
-    )?);
-    written.extend(concepts::make_concepts(&figures.join("concepts"), figures)?);
-    written.extend(waves::make_figures(&figures.join("waves"), size)?);
-    written.extend(many_spheres::make_figures(
-        &figures.join(ch09_many_spheres::BINARY),
-        scenes,
-        size,
-        quiet,
-    )?);
-    written.extend(extras::make_scene_figures(
-        &figures.join("scenes"),
-        scenes,
-        size,
-    )?);
+    parts.time("chapters 1-5", || -> Result<(), JobError> {
+        let t = &mut timings;
+        let w = &mut written;
+        w.extend(chapter_figures(
+            &ch01_ray_cast::CHAPTER,
+            figures,
+            size,
+            quiet,
+            t,
+        )?);
+        w.extend(chapter_figures(
+            &ch02_shadows::CHAPTER,
+            figures,
+            size,
+            quiet,
+            t,
+        )?);
+        w.extend(chapter_figures(
+            &ch03_reflection::CHAPTER,
+            figures,
+            size,
+            quiet,
+            t,
+        )?);
+        w.extend(chapter_figures(
+            &ch04_refraction::CHAPTER,
+            figures,
+            size,
+            quiet,
+            t,
+        )?);
+        w.extend(chapter_figures(
+            &ch05_antialiasing::CHAPTER,
+            figures,
+            size,
+            quiet,
+            t,
+        )?);
+        Ok(())
+    })?;
+    written.extend(parts.time("chapter 6's figures", || {
+        path_tracing_figures(figures, scenes, size, quiet)
+    })?);
+    parts.time(
+        "chapters 7-8 and the speed tables",
+        || -> Result<(), JobError> {
+            written.extend(chapter_figures(
+                &ch07_eight_rays::chapter(ch07_eight_rays::Like::AntiAliasing),
+                figures,
+                size,
+                quiet,
+                &mut timings,
+            )?);
+            let speed = figures.join("speed.md");
+            save_text(&speed_table(&timings), &speed)?;
+            written.push(speed);
+            written.extend(lane_use::make_figure(
+                &figures.join(ch08_eight_paths::PROGRAM.program.binary),
+                size,
+            )?);
+            let pairs = speed::measure(size)?;
+            let pairs_path = figures.join("speed-pairs.md");
+            save_text(&speed::pairs_table(&pairs, &speed::machine()), &pairs_path)?;
+            written.push(pairs_path);
+            let pairs_figure = figures.join("speed-pairs.png");
+            save_png(&speed::pairs_figure(&pairs), &pairs_figure)?;
+            written.push(pairs_figure);
+            Ok(())
+        },
+    )?;
+    parts.time("chapter 10 on the GPU", || -> Result<(), JobError> {
+        // Chapter 10's frames on this machine's GPU adapter, if it has
+        // one, at half the size each way: lavapipe takes seconds per
+        // 800 × 600 frame.
+        let gpu_size = Size {
+            width: size.width / 2,
+            height: size.height / 2,
+        };
+        let gpu = gpu_speed::measure(gpu_size);
+        if let Err(why) = &gpu {
+            println!("workbook: chapter 10's speed table says there is no GPU adapter: {why}");
+        }
+        let gpu_path = figures.join("speed-gpu.md");
+        save_text(&gpu_speed::table(gpu_size, &gpu), &gpu_path)?;
+        written.push(gpu_path);
+        written.extend(gpu_speed::figures(&figures.join("ch10-gpu"), gpu_size)?);
+        Ok(())
+    })?;
+    parts.time("extras and sampling", || -> Result<(), JobError> {
+        written.extend(extras::make_extras(&figures.join("extras"), size)?);
+        written.extend(antialiasing::make_figures(&figures.join("sampling"), size)?);
+        Ok(())
+    })?;
+    parts.time(
+        "learn, the browser page, the explorer",
+        || -> Result<(), JobError> {
+            written.extend(learn_figures::make_learn_figures(&figures.join("learn"))?);
+            // The lab in the browser: chapter 10's shader, its blank, the
+            // packed scenes and the CPU renders its page judges by.
+            written.extend(lab_page::make_lab_page(
+                &figures.join("lab-in-browser"),
+                scenes,
+            )?);
+            // The explorer's screenshots, made through its own state and
+            // scripts without a window, at its window's size.
+            written.extend(raylab_explore::figures::write_book_figures(
+                &figures.join("explorer"),
+            )?);
+            Ok(())
+        },
+    )?;
+    parts.time("concepts and waves", || -> Result<(), JobError> {
+        written.extend(concepts::make_concepts(&figures.join("concepts"), figures)?);
+        written.extend(waves::make_figures(&figures.join("waves"), size)?);
+        Ok(())
+    })?;
+    written.extend(parts.time("chapter 9", || {
+        many_spheres::make_figures(
+            &figures.join(ch09_many_spheres::BINARY),
+            scenes,
+            size,
+            quiet,
+        )
+    })?);
+    written.extend(parts.time("scenes", || {
+        extras::make_scene_figures(&figures.join("scenes"), scenes, size)
+    })?);
     if !quiet {
         println!(
             "extras: wrote {} figures in {}",

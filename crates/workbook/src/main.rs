@@ -6,15 +6,17 @@
 use std::path::Path;
 use std::process::{Command, ExitCode};
 
-use workbook::{JobError, Size, book, claims, make_figures};
+use workbook::{JobError, Parts, Size, book, claims, make_figures};
 
 fn run() -> Result<(), JobError> {
     let book_dir = Path::new("book");
+    let mut parts = Parts::default();
     make_figures(
         &book_dir.join("src/figures"),
         Path::new("scenes"),
         Size::DEFAULT,
         false,
+        &mut parts,
     )?;
     // The hand-written text around each ray-tree figure agrees with the
     // probe.txt it was made with, before the book is built from both.
@@ -28,7 +30,8 @@ fn run() -> Result<(), JobError> {
             wrong.join("\n  ")
         )));
     }
-    let index = book::build(book_dir)?;
+    let index = parts.time("the book", || book::build(book_dir))?;
+    print!("{}", parts.summary());
     println!(
         "book: open {} (or run `mdbook serve book`)",
         index.display()

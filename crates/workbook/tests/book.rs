@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use workbook::book::{
     LISTING_LINES, anchored, build, includes, links, pages, unfolded_listings_over,
 };
-use workbook::{Size, make_figures};
+use workbook::{Parts, Size, make_figures};
 
 fn book_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../book")
@@ -107,7 +107,7 @@ fn the_book_builds_and_shows_only_figures_the_programs_make() {
         width: 160,
         height: 120,
     };
-    let made = make_figures(&figures, &scenes, size, true).unwrap();
+    let made = make_figures(&figures, &scenes, size, true, &mut Parts::default()).unwrap();
     let made: BTreeSet<String> = made
         .iter()
         .map(|p| {
