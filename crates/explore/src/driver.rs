@@ -136,6 +136,15 @@ pub fn frame_summary(times: &[Duration]) -> String {
     )
 }
 
+/// What a run without a window does with the explorer's lines (a probe's
+/// ray tree, a saved frame's command): print them, as the program does, or
+/// drop them, as the book's figures do.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Messages {
+    Print,
+    Drop,
+}
+
 /// The whole run without a window: the script, then `frames` more frames,
 /// then the screenshot. Returns the summary of the frame times.
 pub fn run_headless(
@@ -143,6 +152,7 @@ pub fn run_headless(
     driver: &mut Driver,
     frames: u32,
     screenshot: Option<&Path>,
+    messages: Messages,
 ) -> Result<String, ExploreError> {
     let mut times = Vec::new();
     loop {
@@ -154,7 +164,10 @@ pub fn run_headless(
         if explorer.frame() {
             times.push(explorer.stats().frame);
         }
-        print_messages(explorer);
+        match messages {
+            Messages::Print => print_messages(explorer),
+            Messages::Drop => drop(explorer.take_messages()),
+        }
         if tick != Tick::Busy {
             break;
         }

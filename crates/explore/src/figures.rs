@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use raylab::probe::ProbeTarget;
 
-use crate::driver::{Driver, run_headless};
+use crate::driver::{Driver, Messages, run_headless};
 use crate::error::ExploreError;
 use crate::script;
 use crate::source::Loaded;
@@ -60,8 +60,7 @@ pub fn write_book_figures(dir: &Path) -> Result<Vec<PathBuf>, ExploreError> {
         let steps = script::parse(&text)?;
         let mut explorer = Explorer::new(Loaded::lab(), WIDTH, HEIGHT);
         let mut driver = Driver::new(steps, dir.to_owned());
-        run_headless(&mut explorer, &mut driver, 0, Some(&path))?;
-        explorer.take_messages();
+        run_headless(&mut explorer, &mut driver, 0, Some(&path), Messages::Drop)?;
         written.push(path);
     }
     Ok(written)

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::Parser;
-use raylab_explore::driver::{Driver, run_headless};
+use raylab_explore::driver::{Driver, Messages, run_headless};
 use raylab_explore::source::Loaded;
 use raylab_explore::state::Explorer;
 use raylab_explore::watch::SceneWatch;
@@ -111,6 +111,7 @@ fn run(flags: Flags) -> Result<(), ExploreError> {
             &mut driver,
             flags.frames.unwrap_or(0),
             flags.screenshot.as_deref(),
+            Messages::Print,
         )?;
         println!("raylab-explore: {summary}");
         return Ok(());
