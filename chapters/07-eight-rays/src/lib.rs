@@ -10,8 +10,10 @@
 //! - [`camera`]: a row's primary rays, eight at a time;
 //! - [`shade`]: the lab's shading, lane by lane;
 //! - [`link`]: how each ray links to the next one of its sample;
-//! - [`wave`]: one pass per depth over a whole row, the rays sent on packed
-//!   densely into the next wave;
+//! - [`wave`]: one pass per depth over a whole row, eight rays a group;
+//! - [`pack`]: the rays a group sends on, packed densely into the next wave;
+//! - [`ledger`]: what each ray added to its sample, and the ray its
+//!   sample's stack pops next;
 //! - [`render`]: every row on every core, each sample's ray tree summed in
 //!   the scalar tracer's order;
 //! - [`stats`]: how busy the lanes are, wave by wave (for the book's figures).
@@ -22,7 +24,9 @@
 //! ([`raylab_like`]) it traces as any of chapters 1–5.
 
 pub mod camera;
+pub mod ledger;
 pub mod link;
+pub mod pack;
 pub mod render;
 pub mod shade;
 pub mod soa;

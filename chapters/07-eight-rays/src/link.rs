@@ -1,6 +1,6 @@
 //! How a ray links to the next one of its sample: the order in which the
 //! scalar ray stack would pop them, kept as numbers in the row's ledger
-//! ([`crate::wave::Ledger`]) so that summing a sample is a walk.
+//! ([`crate::ledger::Ledger`]) so that summing a sample is a walk.
 
 /// The link of a sample's last ray: after it, the sample is finished.
 pub const END: u32 = u32::MAX;

@@ -14,9 +14,10 @@ use rayon::prelude::*;
 
 use crate::EightRays;
 use crate::camera::{Primary, PrimaryRays};
+use crate::ledger::Ledger;
 use crate::link::END;
 use crate::shade::Light;
-use crate::wave::{Ledger, Setup, Waves};
+use crate::wave::{Setup, Waves};
 
 // ANCHOR: sum
 /// A sample's colour: the light of its rays added up in the order the

@@ -34,7 +34,7 @@ pub struct Rays {
     records: Vec<f32x8>,
     pub kind: Vec<RayKind>,
     /// The ray that the scalar stack pops once this ray's whole subtree is
-    /// done, as a number in the row's ledger ([`crate::wave::Ledger`]), or
+    /// done, as a number in the row's ledger ([`crate::ledger::Ledger`]), or
     /// [`crate::link::END`] where the sample is then finished.
     pub after: Vec<u32>,
     len: usize,

@@ -3,7 +3,8 @@
 //! The scalar tracer follows one sample's ray tree to the bottom before it
 //! starts the next sample. Here the row's primary rays are traced first,
 //! all of them (wave 1); their reflected and refracted rays, packed densely,
-//! form wave 2; and so on. Each ray leaves an entry in the row's [`Ledger`]:
+//! form wave 2 ([`crate::pack`]); and so on. Each ray leaves an entry in
+//! the row's [`Ledger`] ([`crate::ledger`]):
 //! what it added to its sample, and which entry the scalar ray stack would
 //! pop after it. The sample's colour is then summed by following those
 //! links from its primary ray, so the sums round exactly as chapter 5's do.
@@ -12,108 +13,18 @@
 //! by kind) or per sample (its rays and depth, for the heat maps), and the
 //! latter only when it is asked for.
 
+use raylab::RayKind;
 use raylab::trace::{RAY_BUDGET, RayCounts};
-use raylab::{RayKind, Vec3};
 use raylab_lanes::{SceneX8, reflect, refract};
 use wide::{CmpGt, f32x8};
 
 use crate::Features;
 use crate::camera::{Primary, PrimaryRays};
-use crate::link::{LATER, settle};
+use crate::ledger::Ledger;
+use crate::link::LATER;
+use crate::pack::{Links, Sends, pack_children};
 use crate::shade::{Light, senders};
 use crate::soa::{Group, LANES, Rays, Vec3x8};
-
-// ANCHOR: ledger
-/// One entry per ray traced in a row, numbered in the order the waves
-/// trace them (wave 1's rays first, so a primary ray's number is its
-/// sample's): the light the ray added to its sample, `w · (1 − r − t) ·
-/// local` or `w · sky`, and the number of the ray that the scalar ray stack
-/// pops next for the same sample ([`END`](crate::link::END) after its last).
-///
-/// A ray that sends rays on links to its first child (the transmitted one,
-/// which the stack pops first); the child links to its sibling, and the
-/// last child to whatever its parent linked to before. The links are made
-/// when the children are packed, so summing a sample is a walk along them.
-///
-/// Each entry is one record of 16 bytes, the light and the link side by
-/// side: the walk reads one cache line per ray, not one from each of four
-/// arrays.
-#[derive(Clone, Debug, Default)]
-pub struct Ledger {
-    entries: Vec<Entry>,
-    /// The entries whose link is provisional (see [`LATER`]) until the
-    /// wave is done.
-    unsettled: Vec<u32>,
-}
-
-/// One ray's entry: the light it added, and the ray popped after it.
-#[derive(Clone, Copy, Debug, Default)]
-#[repr(C, align(16))]
-struct Entry {
-    light: [f32; 3],
-    next: u32,
-}
-// ANCHOR_END: ledger
-
-impl Ledger {
-    pub fn clear(&mut self) {
-        self.entries.clear();
-        self.unsettled.clear();
-    }
-
-    /// How many rays are in the ledger: the number the next one gets.
-    pub fn len(&self) -> usize {
-        self.entries.len()
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.entries.is_empty()
-    }
-
-    /// What ray `ray` added to its sample.
-    pub fn light(&self, ray: usize) -> Vec3 {
-        Vec3::from_array(self.entries[ray].light)
-    }
-
-    /// The ray its sample's stack pops after ray `ray`, or [`END`](crate::link::END).
-    pub fn next(&self, ray: usize) -> u32 {
-        self.entries[ray].next
-    }
-
-    /// Append a group's first `lanes` rays: the four numbers of each lane
-    /// transposed into its record (a link travels as an `f32`'s bits).
-    fn push_group(&mut self, light: Vec3x8, next: [u32; LANES], lanes: usize) {
-        let next = f32x8::from(next.map(f32::from_bits));
-        let zero = f32x8::ZERO;
-        let rows = f32x8::transpose([light.x, light.y, light.z, next, zero, zero, zero, zero]);
-        self.entries.extend(rows[..lanes].iter().map(|row| {
-            let [x, y, z, next, ..] = row.to_array();
-            Entry {
-                light: [x, y, z],
-                next: next.to_bits(),
-            }
-        }));
-    }
-
-    fn reserve(&mut self, more: usize) {
-        self.entries.reserve(more + LANES);
-    }
-
-    /// Note that the links of the lanes of `unsettled` (lane `k` in bit
-    /// `k`) of the group whose first entry is `first` are provisional.
-    fn unsettled(&mut self, first: usize, unsettled: i32) {
-        let lanes = raylab_lanes::lanes_of(unsettled as u32);
-        self.unsettled
-            .extend(lanes.map(|lane| (first + lane) as u32));
-    }
-
-    /// Make the provisional links final.
-    fn settle(&mut self, base: u32) {
-        for entry in self.unsettled.drain(..) {
-            settle(&mut self.entries[entry as usize].next, base);
-        }
-    }
-}
 
 /// The fixed part of a render: the scene in lanes, the light, the limits.
 pub struct Setup<'s> {
@@ -130,19 +41,19 @@ pub struct Setup<'s> {
 
 /// What eight rays' shading computed: the light they add, and the rays
 /// they send on (for lanes whose masks are set).
-struct Shaded {
-    added: Vec3x8,
-    hit: f32x8,
-    reflects: f32x8,
-    transmits: f32x8,
-    reflected: Option<(Vec3x8, Vec3x8)>,
+pub(crate) struct Shaded {
+    pub added: Vec3x8,
+    pub hit: f32x8,
+    pub reflects: f32x8,
+    pub transmits: f32x8,
+    pub reflected: Option<(Vec3x8, Vec3x8)>,
     /// The transmitted direction and origin, and the mask of total
     /// internal reflection (where the mirror direction is used instead).
-    transmitted: Option<(Vec3x8, Vec3x8, f32x8)>,
-    reflection: f32x8,
-    transmission: f32x8,
+    pub transmitted: Option<(Vec3x8, Vec3x8, f32x8)>,
+    pub reflection: f32x8,
+    pub transmission: f32x8,
     /// Set where the ray arrived from outside its surface.
-    entering: f32x8,
+    pub entering: f32x8,
 }
 
 // ANCHOR: group
@@ -464,199 +375,5 @@ impl PerSample<'_> {
                 kinds.push((rays.kind[lane], shadow));
             }
         }
-    }
-}
-
-// ANCHOR: pack
-/// Which lanes of a group send on a reflected and a transmitted ray, lane
-/// `k` in bit `k`, and which of those rays travel inside a sphere.
-struct Sends {
-    reflects: i32,
-    transmits: i32,
-    /// Of the reflected rays, those reflected inside a sphere's surface.
-    reflects_inside: i32,
-    /// Of the transmitted rays, those that go into a sphere, or stay in
-    /// it by total internal reflection.
-    transmits_inside: i32,
-}
-
-impl Sends {
-    const NONE: Sends = Sends {
-        reflects: 0,
-        transmits: 0,
-        reflects_inside: 0,
-        transmits_inside: 0,
-    };
-
-    fn any(&self) -> bool {
-        self.reflects | self.transmits != 0
-    }
-}
-
-/// The ledger's links of a group whose rays send rays on. The next wave's
-/// rays are packed in two places, the rays outside spheres (numbered from
-/// `first[0]` on) and those inside (numbered provisionally from `first[1]`,
-/// see [`LATER`]). Each place takes the group's transmitted rays first,
-/// then its reflected ones. The scalar stack pops a ray's transmitted
-/// child first, then its reflected one, then goes on `after`.
-struct Links {
-    /// Each lane's link: its first child, or `after` if it sent nothing.
-    next: [u32; LANES],
-    /// The transmitted children's: their sibling, or their parent's `after`.
-    transmitted_after: [u32; LANES],
-    /// The reflected children's: their parent's `after`.
-    reflected_after: [u32; LANES],
-    /// The lanes whose link (`next`) is provisional: a child inside.
-    unsettled: i32,
-}
-
-impl Links {
-    fn new(sends: &Sends, first: [u32; 2], after: [u32; LANES]) -> Links {
-        let (t, r) = (sends.transmits, sends.reflects);
-        let (ti, ri) = (sends.transmits_inside, sends.reflects_inside);
-        // Per place (outside, inside): the transmitted rays packed there,
-        // the reflected ones, and the number of the first.
-        let places = [(t & !ti, r & !ri, first[0]), (ti, ri, first[1])];
-        let mut links = Links {
-            next: after,
-            transmitted_after: after,
-            reflected_after: after,
-            unsettled: (t & ti) | (r & !t & ri),
-        };
-        for lane in 0..LANES {
-            let bit = 1 << lane;
-            // The lanes before this one, whose children are packed first.
-            let before = bit - 1;
-            let number = |inside: i32, transmitted: bool| {
-                let (pt, pr, first) = places[usize::from(inside & bit != 0)];
-                if transmitted {
-                    first + (pt & before).count_ones()
-                } else {
-                    first + pt.count_ones() + (pr & before).count_ones()
-                }
-            };
-            if r & bit != 0 {
-                let reflected = number(ri, false);
-                links.next[lane] = reflected;
-                links.transmitted_after[lane] = reflected;
-            }
-            if t & bit != 0 {
-                links.next[lane] = number(ti, true);
-            }
-        }
-        links
-    }
-}
-
-/// Append the group's transmitted rays, then its reflected ones, to the
-/// next wave, each packed densely in lane order: the rays that travel
-/// inside a sphere to `inside`, the others to `next`. Count them by kind:
-/// every ray sent on is traced.
-fn pack_children(
-    shaded: &Shaded,
-    sends: &Sends,
-    sample: [u32; LANES],
-    links: &Links,
-    [next, inside]: [&mut Rays; 2],
-    counts: &mut RayCounts,
-) {
-    // Mask: where the light cannot leave the glass, the "transmitted" ray
-    // is the mirror one, and counted as such.
-    let total = shaded.transmitted.map_or(0, |t| t.2.move_mask());
-    let mut count = |kind: RayKind, lanes: i32| {
-        counts.add(kind, u64::from(lanes.count_ones()));
-    };
-    count(RayKind::Reflection, sends.reflects);
-    count(RayKind::Refraction, sends.transmits & !total);
-    count(RayKind::TotalInternalReflection, sends.transmits & total);
-    if let Some((origin, direction, _)) = shaded.transmitted
-        && sends.transmits != 0
-    {
-        let kind = std::array::from_fn(|lane| {
-            if total & (1 << lane) != 0 {
-                RayKind::TotalInternalReflection
-            } else {
-                RayKind::Refraction
-            }
-        });
-        let rays = Group {
-            origin,
-            direction,
-            weight: shaded.transmission,
-            sample,
-            kind,
-            after: links.transmitted_after,
-        };
-        next.push_packed(sends.transmits & !sends.transmits_inside, &rays);
-        inside.push_packed(sends.transmits_inside, &rays);
-    }
-    if let Some((origin, direction)) = shaded.reflected
-        && sends.reflects != 0
-    {
-        let rays = Group {
-            origin,
-            direction,
-            weight: shaded.reflection,
-            sample,
-            kind: [RayKind::Reflection; LANES],
-            after: links.reflected_after,
-        };
-        next.push_packed(sends.reflects & !sends.reflects_inside, &rays);
-        inside.push_packed(sends.reflects_inside, &rays);
-    }
-}
-// ANCHOR_END: pack
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::link::END;
-
-    #[test]
-    fn a_ray_that_sends_both_links_to_its_transmitted_child_then_its_reflected_one() {
-        // Lane 1 sends both rays, lane 3 only a reflected one, lane 6 only
-        // a transmitted one; the others nothing. The next wave's rays are
-        // numbered from 100: transmitted ones (lanes 1, 6) first, then the
-        // reflected ones (lanes 1, 3).
-        let sends = Sends {
-            transmits: 0b0100_0010,
-            reflects: 0b0000_1010,
-            ..Sends::NONE
-        };
-        let after: [u32; LANES] = std::array::from_fn(|lane| 10 + lane as u32);
-        let links = Links::new(&sends, [100, LATER], after);
-        assert_eq!(links.next, [10, 100, 12, 103, 14, 15, 101, 17]);
-        // Lane 1's transmitted ray goes on with its sibling (102), lane 6's
-        // with what lane 6 went on with.
-        assert_eq!(links.transmitted_after[1], 102);
-        assert_eq!(links.transmitted_after[6], 16);
-        assert_eq!(links.reflected_after[1], 11);
-        assert_eq!(links.reflected_after[3], 13);
-    }
-
-    #[test]
-    fn rays_inside_a_sphere_are_numbered_after_the_others_once_the_wave_is_done() {
-        // As above, but lane 1's transmitted ray goes into the glass and
-        // lane 3's reflected ray stays inside it. The others are packed
-        // from 100 (lane 6's transmitted ray, then lane 1's reflected
-        // one); the two inside get provisional numbers, and once the wave
-        // is done they follow the others: 102 and 103.
-        let sends = Sends {
-            transmits: 0b0100_0010,
-            reflects: 0b0000_1010,
-            transmits_inside: 0b0000_0010,
-            reflects_inside: 0b0000_1000,
-        };
-        let after: [u32; LANES] = std::array::from_fn(|lane| 10 + lane as u32);
-        let links = Links::new(&sends, [100, LATER], after);
-        assert_eq!(links.unsettled, 0b0000_1010, "lanes 1 and 3 link inside");
-        let mut next = links.next;
-        next.iter_mut().for_each(|n| settle(n, 102));
-        assert_eq!(next, [10, 102, 12, 103, 14, 15, 100, 17]);
-        assert_eq!(links.transmitted_after[1], 101);
-        assert_eq!(links.transmitted_after[6], 16);
-        let mut end = END;
-        settle(&mut end, 102);
-        assert_eq!(end, END);
     }
 }

@@ -83,11 +83,11 @@ impl Paths {
     /// generators are set by the caller).
     #[inline]
     pub fn start(&mut self, mask: f32x8, origin: Vec3x8, direction: Vec3x8) {
-        let zero = f32x8::ZERO;
         self.origin = Vec3x8::blend_back(mask, origin, self.origin);
         self.direction = Vec3x8::blend_back(mask, direction, self.direction);
         self.throughput = Vec3x8::blend_back(mask, Vec3x8::ONE, self.throughput);
         self.terms.clear(mask);
+        let zero = f32x8::ZERO;
         self.diffuse_bounces = blend_back(mask, zero, self.diffuse_bounces);
         self.after_diffuse = blend_back(mask, zero, self.after_diffuse);
         self.hits = blend_back(mask, zero, self.hits);
@@ -180,7 +180,7 @@ impl Paths {
         if choosing != 0 {
             let u = self.random.uniform(lane_mask(choosing));
             for lane in lanes_of(choosing) {
-                let hit = scene.hit(o, d, hits, lane);
+                let hit = scene.hit_of(o, d, hits, s, lane);
                 match tracer.choose_lobe(d.lane(lane), &hit, u.as_array_ref()[lane]) {
                     Lobe::Mirror => mirror |= 1 << lane,
                     Lobe::Refraction => refraction |= 1 << lane,
@@ -306,24 +306,35 @@ impl Paths {
     }
 
     // ANCHOR: cosine
-    /// `ch06_path_tracing::integrator::cosine_direction` in the lanes of `mask`: the
-    /// rejection loop repeats while any lane's point is still outside the
-    /// disc, and only those lanes draw again, so each lane draws exactly
-    /// the numbers its scalar path draws (x, then y, from its own stream).
+    /// `ch06_path_tracing::integrator::cosine_direction` in the lanes of
+    /// `mask`: every lane draws its first point (x, then y, from its own
+    /// stream) together; the few whose point falls outside the disc draw
+    /// again one lane at a time, so that the others do not wait, each
+    /// with the scalar arithmetic of its own generator. Each lane draws
+    /// exactly the numbers its scalar path draws.
     fn cosine_direction(&mut self, n: Vec3x8, mask: f32x8) -> Vec3x8 {
         let (two, one) = (f32x8::splat(2.0), f32x8::ONE);
-        let (mut x, mut y) = (f32x8::ZERO, f32x8::ZERO);
-        let mut trying = mask.move_mask() as u32;
-        let mut r2 = f32x8::ZERO;
-        while trying != 0 {
-            let drawing = lane_mask(trying);
-            let u = self.random.uniform(drawing);
-            let v = self.random.uniform(drawing);
-            let again = mask_from_bits(trying);
-            x = again.blend(two * u - one, x);
-            y = again.blend(two * v - one, y);
-            r2 = x * x + y * y;
-            trying &= !(r2.cmp_lt(one).move_mask() as u32);
+        let bits = mask.move_mask() as u32;
+        let drawing = lane_mask(bits);
+        let u = self.random.uniform(drawing);
+        let v = self.random.uniform(drawing);
+        let (mut x, mut y) = (two * u - one, two * v - one);
+        let mut r2 = x * x + y * y;
+        let outside = bits & !(r2.cmp_lt(one).move_mask() as u32);
+        if outside != 0 {
+            let (mut xs, mut ys, mut r2s) = (x.to_array(), y.to_array(), r2.to_array());
+            for lane in lanes_of(outside) {
+                loop {
+                    let x = 2.0 * self.random.uniform_in_lane(lane) - 1.0;
+                    let y = 2.0 * self.random.uniform_in_lane(lane) - 1.0;
+                    let r2 = x * x + y * y;
+                    (xs[lane], ys[lane], r2s[lane]) = (x, y, r2);
+                    if r2 < 1.0 {
+                        break;
+                    }
+                }
+            }
+            (x, y, r2) = (f32x8::new(xs), f32x8::new(ys), f32x8::new(r2s));
         }
         let (t, b) = any_orthonormal_pair(n);
         let z = (one - r2).max(f32x8::ZERO).sqrt();

@@ -4,11 +4,13 @@
 use ch06_path_tracing::pixel::RowImages;
 use ch06_path_tracing::{PathRender, PathSettings, PathTracer, render_with};
 use raylab::SceneQuery;
+use raylab::Vec3;
 use raylab::render::Progress;
 use raylab::{Camera, Scene};
-use raylab_lanes::{CameraX8, LANES, SceneQueryX8, SceneX8, SpheresX8, lanes_of, mask_from_bits};
+use raylab_lanes::{
+    CameraX8, LANES, SceneQueryX8, SceneX8, SpheresX8, Vec3x8, lanes_of, mask_from_bits,
+};
 use rayon::prelude::*;
-use wide::f32x8;
 
 use crate::lane_use::{LaneUse, Stage};
 use crate::paths::Paths;
@@ -142,21 +144,22 @@ impl<Q: SceneQuery> Rows<'_, '_, Q> {
             // Every idle lane starts the next sample, while there is one
             // and it fits in the window.
             let idle = !self.paths.active.move_mask() as u32 & 0xff;
-            let (mut column, mut row) = ([0f32; LANES], [0f32; LANES]);
+            let mut directions = [Vec3::ZERO; LANES];
+            let mut states = [0u64; LANES];
             let mut started = 0;
             for lane in lanes_of(idle) {
                 if next == total || !self.window.has_room_for(next) {
                     break;
                 }
-                let start = self.starts.get(sampling, j, next, total);
-                (column[lane], row[lane]) = (start.column, start.row);
-                self.paths.random.start(lane, start.state);
+                let start = self.starts.get(sampling, self.camera, j, next, total);
+                (directions[lane], states[lane]) = (start.direction, start.state);
                 job[lane] = next;
                 started |= 1 << lane;
                 next += 1;
             }
             if started != 0 {
-                let directions = self.camera.directions(f32x8::new(column), f32x8::new(row));
+                self.paths.random.start_lanes(started, states);
+                let directions = Vec3x8::from_lanes(directions);
                 let mask = mask_from_bits(started);
                 self.paths.start(mask, self.camera.eye, directions);
             }

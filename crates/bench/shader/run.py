@@ -318,12 +318,9 @@ def own_time_ms(stdout):
     return float(found.group(1)) * (1.0 if found.group(2) == "ms" else 1e3)
 
 
-def compare(rounds, spp, seed):
+def compare(rounds, spp, seed, only="abcdehfg"):
     """Time (a)–(h) alternately, round after round, so that the machine's
     drift and the other engineers' builds fall on every variant alike."""
-    for binary in ("ch05-antialiasing", "ch06-path-tracing", "ch07-eight-rays"):
-        if not (RELEASE / binary).exists():
-            fail(f"{RELEASE / binary} is missing: cargo build --release -p {binary}")
     ctx = open_context()
     whitted = Shader(ctx, "whitted")
     path = Shader(ctx, "path")
@@ -343,15 +340,18 @@ def compare(rounds, spp, seed):
         "d": (f"path shader frame, {spp} spp", None),
         "e": (f"ch06-path-tracing process, {spp} spp",
               [RELEASE / "ch06-path-tracing", *size, "--spp", str(spp), "--no-diagrams", "--out", tmp / "e"]),
-        "h": (f"ch06-path-tracing process, {spp} spp, --tracer scalar",
-              [RELEASE / "ch06-path-tracing", *size, "--spp", str(spp), "--tracer", "scalar", "--no-diagrams",
-               "--out", tmp / "h"]),
+        "h": (f"ch08-eight-paths process, {spp} spp",
+              [RELEASE / "ch08-eight-paths", *size, "--spp", str(spp), "--no-diagrams", "--out", tmp / "h"]),
         "f": ("whitted shader whole process",
               [sys.executable, HERE / "run.py", "--shader", "whitted", "--whole", "--out", tmp / "f"]),
         "g": (f"path shader whole process, {spp} spp",
               [sys.executable, HERE / "run.py", "--shader", "path", "--spp", str(spp), "--seed", str(seed),
                "--whole", "--out", tmp / "g"]),
     }
+    variants = {k: v for k, v in variants.items() if k in only}
+    for _, command in variants.values():
+        if command is not None and Path(command[0]).parent == RELEASE and not Path(command[0]).exists():
+            fail(f"{command[0]} is missing: cargo build --release -p {Path(command[0]).name}")
     times = {k: [] for k in variants}
     cpu = {k: [] for k in variants}
     internal = {k: [] for k in variants}
@@ -398,17 +398,25 @@ def compare(rounds, spp, seed):
         # Round by round, then the median: each pair ran seconds apart.
         return statistics.median(p / q for p, q in zip(of[x], of[y]))
 
-    print(f"whitted shader frame / ch07 process (issue 15 asks >= 3): {ratio('a', 'c'):.2f}x "
-          f"(processor time: {ratio('a', 'c', cpu):.2f}x)")
-    print(f"whitted shader whole process / ch07 process: {ratio('f', 'c'):.2f}x")
-    print(f"whitted shader frame / ch05 process: {ratio('a', 'b'):.2f}x (processor time: {ratio('a', 'b', cpu):.2f}x)")
-    print(f"ch06 process / path shader frame, time: {ratio('e', 'd'):.2f}x "
-          f"(processor time: {ratio('e', 'd', cpu):.2f}x) "
-          f"(ch06 {paths / median['e'] / 1e3:.2f} vs shader {paths / median['d'] / 1e3:.2f} M paths/s, "
-          f"{rays['e'] / median['e'] / 1e3:.1f} vs {rays['d'] / median['d'] / 1e3:.1f} Mrays/s)")
-    print(f"path shader whole process / ch06 process: {ratio('g', 'e'):.2f}x")
-    print(f"ch06 process --tracer scalar / eight (the default): {ratio('h', 'e'):.2f}x "
-          f"(processor time: {ratio('h', 'e', cpu):.2f}x; the renders alone: {ratio('h', 'e', internal):.2f}x)")
+    lines = [
+        ("ac", lambda: f"whitted shader frame / ch07 process (issue 15 asks >= 3): {ratio('a', 'c'):.2f}x "
+                       f"(processor time: {ratio('a', 'c', cpu):.2f}x)"),
+        ("fc", lambda: f"whitted shader whole process / ch07 process: {ratio('f', 'c'):.2f}x"),
+        ("ab", lambda: f"whitted shader frame / ch05 process: {ratio('a', 'b'):.2f}x "
+                       f"(processor time: {ratio('a', 'b', cpu):.2f}x)"),
+        ("dh", lambda: f"path shader frame / ch08 process (issue 42 asks >= 2): {ratio('d', 'h'):.2f}x "
+                       f"(processor time: {ratio('d', 'h', cpu):.2f}x) "
+                       f"(ch08 {paths / median['h'] / 1e3:.2f} vs shader {paths / median['d'] / 1e3:.2f} M paths/s, "
+                       f"{rays['h'] / median['h'] / 1e3:.1f} vs {rays['d'] / median['d'] / 1e3:.1f} Mrays/s)"),
+        ("de", lambda: f"path shader frame / ch06 process: {ratio('d', 'e'):.2f}x "
+                       f"(processor time: {ratio('d', 'e', cpu):.2f}x)"),
+        ("gh", lambda: f"path shader whole process / ch08 process: {ratio('g', 'h'):.2f}x"),
+        ("eh", lambda: f"ch06 process (one path at a time) / ch08 process (eight): {ratio('e', 'h'):.2f}x "
+                       f"(processor time: {ratio('e', 'h', cpu):.2f}x; the renders alone: {ratio('e', 'h', internal):.2f}x)"),
+    ]
+    for needs, line in lines:
+        if all(k in variants for k in needs):
+            print(line())
 
 
 def main():
@@ -420,6 +428,8 @@ def main():
     parser.add_argument("--compare", action="store_true", help="the interleaved speed table, (a) to (h)")
     parser.add_argument("--frames", type=int, default=10, help="timed frames after the warm-up [10]")
     parser.add_argument("--rounds", type=int, default=15, help="rounds of --compare [15]")
+    parser.add_argument("--only", default="abcdehfg",
+                        help="the variants --compare times, by letter (e.g. dh: the path shader's frame and ch08) [abcdehfg]")
     parser.add_argument("--spp", type=int, default=16, help="paths per pixel of the path shader [16]")
     parser.add_argument("--seed", type=int, default=1, help="seed of the path shader's random numbers [1]")
     parser.add_argument("--out", type=Path, default=Path("out") / "shader", help="folder to write into [out/shader]")
@@ -428,8 +438,10 @@ def main():
         fail(f"--spp {args.spp}: paths per pixel must be 1 to 4096")
     if args.frames < 1 or args.rounds < 1:
         fail("--frames and --rounds must be at least 1")
+    if not args.only or any(k not in "abcdefgh" for k in args.only):
+        fail(f"--only {args.only}: name variants by their letters, a to h")
     if args.compare:
-        compare(args.rounds, args.spp, args.seed)
+        compare(args.rounds, args.spp, args.seed, args.only)
     elif args.check:
         check(args.spp, args.seed)
     elif args.shader:

@@ -21,12 +21,12 @@
 //! | [`plane_hits`], [`sphere_hits`] | `Plane::intersect`, `Sphere::intersect` | `scene::tests` (every lane against `Scene::nearest_hit`) |
 //! | [`CameraX8`] | `Camera::ray` | `camera::tests::eight_camera_rays_at_a_time_are_camera_ray_to_the_bit` |
 //! | [`SceneX8::nearest_in_list`], [`SceneX8::any_in_list`] | `Scene::nearest_hit`, `Scene::any_hit` | `scene::tests::eight_rays_hit_what_the_scalar_scene_says_at_the_same_distance`, `…a_shadow_ray_is_blocked_in_exactly_the_lanes_the_scalar_scene_says` |
-//! | [`SceneX8::surfaces`], [`SceneX8::hit`] | `Scene::hit_record`, `Checker::albedo_at` | `scene::tests` (the same test, and `…the_checker_parity_matches_the_scalar_one_far_out_and_at_nan`) |
+//! | [`SceneX8::surfaces`], [`SceneX8::hit`], [`SceneX8::hit_of`] | `Scene::hit_record`, `Checker::albedo_at` | `scene::tests` (the same test, and `…the_checker_parity_matches_the_scalar_one_far_out_and_at_nan`) |
 //! | [`SkyX8::radiance`] | `Sky::radiance` | `light::tests::the_sky_of_eight_directions_is_the_scalar_sky_nan_and_minus_zero_included` |
 //! | [`reflect`], [`refract`] | `optics::reflect`, `optics::refract` | `optics::tests::eight_reflections_and_refractions_equal_the_scalar_ones_to_the_bit` |
 //! | [`SceneQueryX8`] (another way to find the hits: chapter 9's tree, `ch09_many_spheres::BvhX8`) | `Scene::nearest_hit`, `Scene::any_hit`, through [`SceneX8::nearest_in_list`], [`SceneX8::any_in_list`] | `chapters/09-many-spheres/tests/tree_matches_list.rs` (random scenes and rays, every lane) |
 //! | [`SpheresX8`] (one ray, eight spheres) | `Scene::nearest_hit`, `Scene::any_hit` | `spheres::tests` (50,000 random rays, ties, padding) |
-//! | [`Pcg32x8`], [`sample_hashes`], [`sample_rngs`] | `sample_rng` and its `Pcg32` | `rng::tests` |
+//! | [`Pcg32x8`] (and [`Pcg32x8::uniform_in_lane`], one lane's draw in scalar arithmetic), [`sample_hashes`], [`sample_rngs`] | `sample_rng` and its `Pcg32` | `rng::tests` |
 //! | [`offsets_x8`] | `PixelSamples::offset` (`jittered`, `random`) | `samples::tests::eight_jittered_or_random_points_at_once_are_offset_s_points_to_the_bit` |
 //!
 //! What the chapters do with these (chapter 7's shading, chapter 8's

@@ -51,6 +51,10 @@ impl U64x8 {
         std::array::from_fn(|l| (u64::from(hi[l]) << 32) | u64::from(lo[l]))
     }
 
+    fn lane(&self, lane: usize) -> u64 {
+        (u64::from(self.hi.as_array_ref()[lane]) << 32) | u64::from(self.lo.as_array_ref()[lane])
+    }
+
     fn set_lane(&mut self, lane: usize, x: u64) {
         self.hi.as_array_mut()[lane] = (x >> 32) as u32;
         self.lo.as_array_mut()[lane] = x as u32;
@@ -160,9 +164,33 @@ impl Pcg32x8 {
         f32x8::new(top.map(|t| t as f32)) * f32x8::splat(1.0 / (1u32 << 24) as f32)
     }
 
+    /// [`Pcg32x8::uniform`] in lane `lane` alone, one step of its
+    /// generator in scalar arithmetic: for the few lanes that draw again
+    /// after the others are done (a rejection loop's retries), where a
+    /// step of all eight would wait for one.
+    pub fn uniform_in_lane(&mut self, lane: usize) -> f32 {
+        let s = self.state.lane(lane);
+        let stepped = s.wrapping_mul(PCG_MULTIPLIER).wrapping_add(self.increment);
+        self.state.set_lane(lane, stepped);
+        // XSH RR, as in `next_u32`.
+        let xorshifted = (((s >> 18) ^ s) >> 27) as u32;
+        let drawn = xorshifted.rotate_right((s >> 59) as u32);
+        // `unit_f32`: the top 24 bits, exact in an f32.
+        (drawn >> 8) as f32 * (1.0 / (1u32 << 24) as f32)
+    }
+
     /// Every lane's state, to be started later with [`Pcg32x8::start`].
     pub fn states(&self) -> [u64; LANES] {
         self.state.to_array()
+    }
+
+    /// The lanes whose bit is set in `bits` start from their `states`
+    /// (each one of [`Pcg32x8::states`]), the others go on: one blend of
+    /// all eight, where a lane-by-lane write would leave the next draw
+    /// to read a register back from eight pieces of memory.
+    pub fn start_lanes(&mut self, bits: u32, states: [u64; LANES]) {
+        let mask = lane_mask(bits);
+        self.state = U64x8::select(mask, U64x8::new(states), self.state);
     }
 
     /// Lane `lane` starts from `state` (one of [`Pcg32x8::states`]).
@@ -293,12 +321,36 @@ mod tests {
         }
         // Every lane's state is its scalar generator's, and a lane started
         // from a state goes on as the scalar generator with that state.
-        assert_eq!(lanes.states(), scalar.map(|rng| rng.state()));
+        assert_eq!(lanes.states(), scalar.each_ref().map(|rng| rng.state()));
+        // A draw in one lane alone goes on as that lane's scalar generator
+        // and leaves the other lanes where they were.
+        for round in 0..20 {
+            let lane = round % LANES;
+            let u = lanes.uniform_in_lane(lane);
+            assert_eq!(u, unit_f32(&mut scalar[lane]), "round {round}");
+            assert_eq!(lanes.states(), scalar.each_ref().map(|rng| rng.state()));
+        }
         let mut fresh = hashes[0].sample_rng(100, Stream::Path);
         lanes.start(6, fresh.state());
         assert_eq!(
             lanes.next_u32(lane_mask(ALL)).to_array()[6],
             fresh.next_u32()
         );
+        // Lanes 1 and 4 start afresh together, the others go on.
+        let mut fresh: [Pcg32; LANES] =
+            std::array::from_fn(|l| hashes[0].sample_rng(200 + l as u32, Stream::Path));
+        let before = lanes.states();
+        lanes.start_lanes(0b1_0010, fresh.each_ref().map(|rng| rng.state()));
+        let after = lanes.states();
+        for lane in 0..LANES {
+            let expected = if lane == 1 || lane == 4 {
+                fresh[lane].state()
+            } else {
+                before[lane]
+            };
+            assert_eq!(after[lane], expected, "lane {lane}");
+        }
+        let drawn = lanes.next_u32(lane_mask(ALL)).to_array();
+        assert_eq!(drawn[4], fresh[4].next_u32());
     }
 }

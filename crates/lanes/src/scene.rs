@@ -329,6 +329,28 @@ impl<'s> SceneX8<'s> {
             .hit_record(&ray, hits.t.as_array_ref()[lane], object)
     }
 
+    /// [`SceneX8::hit`] of a sphere's hit, read from the hit records the
+    /// lanes made already (`s`, from [`SceneX8::surfaces`] of the same rays
+    /// and `hits`), which hold `Scene::hit_record`'s numbers to the bit: a
+    /// copy of eight numbers, where `hit` works the point and the normal out
+    /// again. A ground hit, whose material the checker colours, is `hit`'s.
+    pub fn hit_of(&self, o: Vec3x8, d: Vec3x8, hits: &Hits, s: &Surfaces, lane: usize) -> Hit {
+        let number = hits.object.as_array_ref()[lane];
+        if number == GROUND {
+            return self.hit(o, d, hits, lane);
+        }
+        let k = number as usize - 1;
+        Hit {
+            t: hits.t.as_array_ref()[lane],
+            point: s.point.lane(lane),
+            normal: s.normal.lane(lane),
+            facing_normal: s.facing_normal.lane(lane),
+            entering: s.entering.as_array_ref()[lane] != 0.0,
+            object: Object::Sphere(k),
+            material: self.scene.spheres()[k].material,
+        }
+    }
+
     // ANCHOR: checker
     /// The ground's checker colour at eight points, as `Checker::albedo_at`
     /// decides it: the parity of `floor(x) + floor(z)` as an `i64`. With
@@ -410,6 +432,7 @@ mod tests {
                         assert_eq!(surfaces.facing_normal.lane(lane), hit.facing_normal);
                         assert_eq!(surfaces.albedo.lane(lane), hit.material.albedo());
                         assert_eq!(wide.hit(o, d, &hits, lane), hit);
+                        assert_eq!(wide.hit_of(o, d, &hits, &surfaces, lane), hit);
                     }
                 }
             }
