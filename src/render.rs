@@ -84,6 +84,12 @@ pub fn render<S: Step + ?Sized>(
 /// [`render`], with every ray's hit found by `objects` (a [`SceneQuery`]
 /// that gives the scene's own answers faster, such as a tree of boxes)
 /// instead of by testing the scene's objects one by one.
+///
+/// The one rule for plugging in a query, here and in the chapters'
+/// renderers: `render_X` tests every object, and `render_X_with_query`
+/// takes the query as a type parameter `Q`, not a `&dyn SceneQuery`, so
+/// that its search is compiled into the trace loop instead of costing
+/// every ray a call and a copy of its `Hit`.
 pub fn render_with_query<S: Step + ?Sized, Q: SceneQuery>(
     scene: &Scene,
     objects: &Q,
