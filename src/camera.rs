@@ -6,6 +6,7 @@ use crate::ray::Ray;
 /// A pinhole camera looking from `eye` at `target`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Camera {
+    /// Where every primary ray starts: the pinhole.
     pub eye: Vec3,
     /// Unit vector the camera looks along.
     forward: Vec3,
@@ -20,10 +21,13 @@ pub struct Camera {
 /// Why a camera cannot be built.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum CameraError {
+    /// The eye and the target give no direction to look along.
     #[error("the camera's eye and target must be different finite points")]
     NoViewDirection,
+    /// The up vector gives no right and up for the image.
     #[error("the camera's up vector must be finite and not parallel to the view direction")]
     UpParallelToView,
+    /// The field of view, in degrees, leaves no image to see.
     #[error("the field of view is {0}°, but it must be between 0° and 180°, exclusive")]
     FieldOfView(f32),
 }
@@ -68,7 +72,7 @@ impl Camera {
     }
 
     // ANCHOR: ray
-    /// The ray through the point `(sx, sy)` ∈ [0,1]² of pixel column `i`,
+    /// The ray through the point `(sx, sy)` ∈ \[0,1\]² of pixel column `i`,
     /// row `j` (row 0 at the top) of a `width` × `height` image.
     #[inline]
     pub fn ray(&self, i: u32, j: u32, (sx, sy): (f32, f32), width: u32, height: u32) -> Ray {

@@ -1,7 +1,7 @@
 //! What a render is asked for and what it gives back: the settings, the
 //! finished image with its tallies, and what a render keeps besides its
 //! 8-bit image. Every renderer shares these, the scalar one of
-//! [`render`](crate::render) and the faster ones beside it.
+//! [`render`](fn@crate::render) and the faster ones beside it.
 
 use std::fmt;
 use std::time::Duration;
@@ -16,7 +16,9 @@ use crate::trace::{RAY_BUDGET, RayCounts};
 /// How to render: the image size, the limits of the ray tree and the samples.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Settings {
+    /// Image width in pixels.
     pub width: u32,
+    /// Image height in pixels.
     pub height: u32,
     /// The deepest ray traced; 1 traces only the primary rays.
     pub max_depth: u32,
@@ -29,6 +31,7 @@ pub struct Settings {
 /// A rendered image, with what the renderer did to make it.
 #[derive(Clone, Debug)]
 pub struct Rendered {
+    /// What the render was asked for.
     pub settings: Settings,
     /// The image as `render.png` stores it: the lab model's 8-bit sRGB, encoded
     /// by the workers as they finish each row.
@@ -37,7 +40,9 @@ pub struct Rendered {
     pub linear: Option<LinearImage>,
     /// The depth and ray-count maps, when the render was asked to keep them.
     pub maps: Option<PixelMaps>,
+    /// The rays traced for the whole image, by kind.
     pub counts: RayCounts,
+    /// How long the render took, encoding included.
     pub elapsed: Duration,
     /// Pixels whose colour came out NaN or infinite and were set to black.
     /// Always 0 for a correct step; reported rather than hidden.
@@ -50,6 +55,7 @@ pub struct Rendered {
 /// are summed with `+`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct RowTally {
+    /// The rays traced for the row, by kind.
     pub counts: RayCounts,
     /// Pixels that came out NaN or infinite.
     pub non_finite: usize,

@@ -20,7 +20,7 @@
 //! 6. [`optics`]: `reflect` and `refract`;
 //! 7. [`stack`] and [`trace`]: the ray stack and its loop, and the
 //!    [`Step`] seam a chapter plugs into;
-//! 8. [`sampling`] and [`render`]: where a pixel's rays go, and a whole
+//! 8. [`sampling`] and [`render`](mod@render): where a pixel's rays go, and a whole
 //!    image on every core.
 //!
 //! ## Plumbing you may skip
@@ -29,12 +29,16 @@
 //! (each row written straight into the image), [`srgb`] and
 //! [`linear_image`] (encoding, with a table that is checked against the
 //! formula for every `f32`), [`probe`] (one pixel's ray tree, for the
-//! diagrams) and [`tolerance`] (how close two correct images must be).
+//! diagrams), the tracer's bookkeeping beside its loop (`src/trace/record.rs`:
+//! rays counted by kind, the probe's log, the per-depth colours) and
+//! [`tolerance`] (how close two correct images must be).
 //!
 //! Nothing here draws a figure, reads a file or parses a command line: the
 //! program around a step is `raylab-cli`'s, and its figures are drawn with
 //! `raylab-plot`. The lab model (the book's appendix)
 //! defines every formula used here.
+
+#![warn(missing_docs)]
 
 pub mod camera;
 pub mod frame;

@@ -5,7 +5,9 @@ use crate::Vec3;
 /// The sky seen along a direction: pale at the horizon, deep blue overhead.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sky {
+    /// The radiance of a ray level with the ground, or below it.
     pub horizon: Vec3,
+    /// The radiance of a ray straight up.
     pub zenith: Vec3,
 }
 

@@ -38,18 +38,25 @@ impl LinearImage {
         }
     }
 
+    /// Columns of pixels.
     pub fn width(&self) -> u32 {
         self.width
     }
 
+    /// Rows of pixels.
     pub fn height(&self) -> u32 {
         self.height
     }
 
+    /// Every pixel, row by row from the top, each row left to right.
     pub fn pixels(&self) -> &[Vec3] {
         &self.pixels
     }
 
+    /// The pixel in column `x` of row `y` (row 0 at the top).
+    ///
+    /// # Panics
+    /// If `(x, y)` is outside the image.
     pub fn pixel(&self, x: u32, y: u32) -> Vec3 {
         self.pixels[(y * self.width + x) as usize]
     }

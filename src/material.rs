@@ -19,27 +19,55 @@ pub struct Material {
 /// Why a material was rejected: the field and the rule it breaks.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum MaterialError {
+    /// A number is NaN or infinite.
     #[error("{field} is {value}, but every number of a material must be finite")]
-    NotFinite { field: &'static str, value: f32 },
+    NotFinite {
+        /// The field's name, as a scene file spells it.
+        field: &'static str,
+        /// The number given.
+        value: f32,
+    },
+    /// An albedo channel below 0 or above 1.
     #[error("albedo {value} must be between 0 and 1 in every channel")]
-    AlbedoOutOfRange { value: f32 },
+    AlbedoOutOfRange {
+        /// The channel's value.
+        value: f32,
+    },
+    /// A mirror or glass share below 0.
     #[error("{field} is {value}, but it must be at least 0")]
-    Negative { field: &'static str, value: f32 },
+    Negative {
+        /// The field's name, as a scene file spells it.
+        field: &'static str,
+        /// The number given.
+        value: f32,
+    },
+    /// `r + t > 1`: the surface would send on more light than it receives.
     #[error(
         "reflection + transmission is {reflection} + {transmission} = {sum}, \
          but a surface cannot send on more light than it receives: keep the sum at most 1"
     )]
     MoreThanAllTheLight {
+        /// The mirror share `r`.
         reflection: f32,
+        /// The glass share `t`.
         transmission: f32,
+        /// `r + t`, as added in `f32`.
         sum: f32,
     },
+    /// A transmitting material with an index of refraction below 1.
     #[error(
         "ior is {ior}, but a material that transmits light needs an index of refraction of at least 1"
     )]
-    IorBelowOne { ior: f32 },
+    IorBelowOne {
+        /// The index given.
+        ior: f32,
+    },
+    /// An index of refraction above [`MAX_IOR`].
     #[error("ior is {ior}, but it must be at most {MAX_IOR} (diamond is 2.42)")]
-    IorTooHigh { ior: f32 },
+    IorTooHigh {
+        /// The index given.
+        ior: f32,
+    },
 }
 
 /// The largest index of refraction accepted. No real material comes near

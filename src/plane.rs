@@ -6,7 +6,9 @@ use crate::ray::Ray;
 /// An infinite plane through `point` with unit `normal`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Plane {
+    /// Any point on the plane (`p0`).
     pub point: Vec3,
+    /// Its unit normal (`n`).
     pub normal: Vec3,
 }
 
@@ -33,7 +35,9 @@ impl Plane {
 /// The two colours of the ground's unit squares.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Checker {
+    /// The albedo of the squares where `floor(x) + floor(z)` is even.
     pub even: Vec3,
+    /// The albedo of the others.
     pub odd: Vec3,
 }
 

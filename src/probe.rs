@@ -17,15 +17,23 @@ pub enum ProbeTarget {
     /// `(0, 0)` is the centre, and a point at distance 1 is on its outline
     /// (near enough: perspective makes the outline a little larger).
     OnSphere {
+        /// The sphere's name in the scene.
         name: &'static str,
+        /// Radii to the right of the centre, as the camera sees it.
         right: f32,
+        /// Radii up from the centre, as the camera sees it.
         up: f32,
     },
     /// A ground pixel in the shadow of the named sphere: the point whose
     /// line towards the sun passes `above` radii above the sphere's
     /// centre. The higher the line crosses the ball, the longer the
     /// feeler from the ground to it.
-    ShadowOf { name: &'static str, above: f32 },
+    ShadowOf {
+        /// The name of the sphere casting the shadow.
+        name: &'static str,
+        /// Radii above the sphere's centre that the line to the sun passes.
+        above: f32,
+    },
 }
 
 impl ProbeTarget {
@@ -69,7 +77,9 @@ impl ProbeTarget {
 /// the order it was traced (parents before children).
 #[derive(Clone, Debug, PartialEq)]
 pub struct SampleTree {
+    /// Where in the pixel the sample's primary ray starts, in [0,1)².
     pub offset: (f32, f32),
+    /// Every ray of its tree, shadow rays included.
     pub rays: Vec<TracedRay>,
 }
 

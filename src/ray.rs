@@ -8,7 +8,9 @@ use crate::Vec3;
 /// and the intersection formulas can skip the `dot(d, d)` term.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ray {
+    /// Where the ray starts (`o`).
     pub origin: Vec3,
+    /// Which way it goes (`d`), of unit length.
     pub direction: Vec3,
 }
 

@@ -16,6 +16,7 @@ use crate::trace::{Step, Tracer};
 /// a render's progress (the bench draws a bar with it). Any `Fn()` closure
 /// is one, and [`NoProgress`] shows nothing.
 pub trait Progress: Sync {
+    /// One more row of the image is finished.
     fn row_done(&self);
 }
 
@@ -81,8 +82,14 @@ pub fn render<S: Step + ?Sized>(
 }
 
 /// [`render`], with every ray's hit found by `objects` (a [`SceneQuery`]
-/// that gives the scene's own answers faster, such as chapter 9's tree)
+/// that gives the scene's own answers faster, such as a tree of boxes)
 /// instead of by testing the scene's objects one by one.
+///
+/// The one rule for plugging in a query, here and in the chapters'
+/// renderers: `render_X` tests every object, and `render_X_with_query`
+/// takes the query as a type parameter `Q`, not a `&dyn SceneQuery`, so
+/// that its search is compiled into the trace loop instead of costing
+/// every ray a call and a copy of its `Hit`.
 pub fn render_with_query<S: Step + ?Sized, Q: SceneQuery>(
     scene: &Scene,
     objects: &Q,

@@ -45,6 +45,7 @@ pub enum Pattern {
 }
 
 impl Pattern {
+    /// Every pattern, in the order `--help` lists them.
     pub const ALL: [Pattern; 4] = [
         Pattern::Grid,
         Pattern::Jittered,
@@ -109,16 +110,22 @@ pub enum Layout {
 /// Why a sampling cannot be made; each is one line for the learner.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum SamplingError {
+    /// Rays per pixel outside 1 to [`MAX_SPP`].
     #[error("rays per pixel must be a whole number from 1 to {MAX_SPP}, not {0}")]
     Count(u32),
+    /// A grid pattern asked for a number of rays that is not a square.
     #[error(
         "--pattern {pattern} needs a square number of rays per pixel (m × m), and {spp} is not \
          one: try --spp {below} or --spp {above}"
     )]
     NotSquare {
+        /// The pattern asked for (`grid` or `jittered`).
         pattern: Pattern,
+        /// The rays per pixel asked for.
         spp: u32,
+        /// The nearest square below it.
         below: u32,
+        /// The nearest square above it.
         above: u32,
     },
 }
@@ -197,10 +204,12 @@ impl Sampling {
         self.spp
     }
 
+    /// The seed of every random choice of a render.
     pub fn seed(&self) -> u64 {
         self.seed
     }
 
+    /// How a pixel's samples are laid out (what `--spp` and `--pattern` chose).
     pub fn layout(&self) -> Layout {
         self.layout
     }

@@ -12,21 +12,27 @@ use crate::sphere::Sphere;
 /// The checkered ground. It neither reflects nor transmits.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ground {
+    /// Where the ground lies.
     pub plane: Plane,
+    /// Its two colours.
     pub checker: Checker,
 }
 
 /// A sphere in the scene, with its name and its material.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SceneSphere {
+    /// The name scene files, probes and error messages call it by.
     pub name: String,
+    /// Where it is and how big.
     pub shape: Sphere,
+    /// What it does with the light that reaches it.
     pub material: Material,
 }
 
 /// Which object a ray hit.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Object {
+    /// The checkered ground plane.
     Ground,
     /// The sphere at this index of [`Scene::spheres`].
     Sphere(usize),
@@ -37,6 +43,7 @@ pub enum Object {
 pub struct Hit {
     /// Distance along the ray.
     pub t: f32,
+    /// Where the ray meets the surface: `o + t · d`.
     pub point: Vec3,
     /// Unit normal pointing out of the object (`n`).
     pub normal: Vec3,
@@ -44,6 +51,7 @@ pub struct Hit {
     pub facing_normal: Vec3,
     /// Whether the ray arrives from outside (`dot(d, n) < 0`).
     pub entering: bool,
+    /// The object hit, for the probe's log and the ground's checker.
     pub object: Object,
     /// The material, with the ground's checker colour filled in.
     pub material: Material,
@@ -52,13 +60,28 @@ pub struct Hit {
 /// A scene rejected while it was being built.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum SceneError {
+    /// A sphere whose radius is not a finite number above 0.
     #[error("sphere '{name}': radius is {radius}, but it must be a finite number above 0")]
-    BadRadius { name: String, radius: f32 },
+    BadRadius {
+        /// The sphere's name.
+        name: String,
+        /// The radius given.
+        radius: f32,
+    },
+    /// A sphere whose centre is NaN or infinite.
     #[error("sphere '{name}': its centre {centre} must be finite")]
-    BadCentre { name: String, centre: Vec3 },
+    BadCentre {
+        /// The sphere's name.
+        name: String,
+        /// The centre given.
+        centre: Vec3,
+    },
+    /// An object whose material breaks a rule.
     #[error("{object}: {source}")]
     Material {
+        /// The object's name (`ground` or a sphere's).
         object: String,
+        /// The rule broken.
         source: MaterialError,
     },
 }
@@ -66,9 +89,12 @@ pub enum SceneError {
 /// Everything a ray can meet, and the light that falls on it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
+    /// The checkered plane under everything.
     pub ground: Ground,
     spheres: Vec<SceneSphere>,
+    /// What a ray that meets nothing sees.
     pub sky: Sky,
+    /// The one light that casts shadows.
     pub sun: Sun,
 }
 
@@ -248,7 +274,7 @@ impl Scene {
 /// The two questions a tracer asks of a scene's objects: which one a ray
 /// meets first, and whether it meets any. [`Scene`] answers them by
 /// testing every object in turn; a faster way to find the same answers
-/// (eight spheres at a time, a tree of boxes) answers them through this
+/// (a tree of boxes around the objects, say) answers them through this
 /// trait, to the bit, so that a tracer may be handed either.
 pub trait SceneQuery: Sync {
     /// The first surface the ray meets ([`Scene::nearest_hit`]).

@@ -6,7 +6,9 @@ use crate::ray::Ray;
 /// A sphere with centre `c` and radius `R`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sphere {
+    /// The centre `c`.
     pub centre: Vec3,
+    /// The radius `R`, above 0.
     pub radius: f32,
 }
 

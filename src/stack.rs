@@ -22,7 +22,9 @@ pub const STACK_CAPACITY: usize = MAX_DEPTH_LIMIT as usize * (MAX_SECONDARIES - 
 /// A ray waiting on the stack, with what the ray stack of the lab model carries.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PendingRay {
+    /// The ray to trace.
     pub ray: Ray,
+    /// Why it is traced: from the eye, or sent on by a surface.
     pub kind: RayKind,
     /// The share of this ray's light that reaches the pixel.
     pub weight: f32,
@@ -82,10 +84,12 @@ impl RayStack {
     }
     // ANCHOR_END: push_pop
 
+    /// How many rays wait on the stack.
     pub fn len(&self) -> usize {
         self.len
     }
 
+    /// Whether no ray waits: the pixel's tree is finished.
     pub fn is_empty(&self) -> bool {
         self.len == 0
     }

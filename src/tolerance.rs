@@ -35,7 +35,9 @@ pub struct Agreement {
 /// A pixel where two images differ, and both its values.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct WorstPixel {
+    /// Its column, 0 at the left.
     pub x: u32,
+    /// Its row, 0 at the top.
     pub y: u32,
     /// The value in the first image compared (the one being judged).
     pub ours: [u8; 3],

@@ -1,10 +1,15 @@
 //! The tracer: the ray-stack loop of the lab model, and the seam where a chapter
 //! plugs in what happens when a ray hits something.
 
+mod record;
+
 use crate::Vec3;
 use crate::ray::{Ray, RayKind};
-use crate::scene::{Hit, Object, Scene, SceneQuery};
+use crate::scene::{Hit, Scene, SceneQuery};
 use crate::stack::{MAX_DEPTH_LIMIT, MAX_SECONDARIES, PendingRay, RayStack};
+
+pub use record::{RayCounts, TracedRay};
+use record::{Record, ShadowLog};
 
 // ANCHOR: step
 /// What a chapter adds: how a surface that a ray has hit is shaded.
@@ -16,6 +21,8 @@ use crate::stack::{MAX_DEPTH_LIMIT, MAX_SECONDARIES, PendingRay, RayStack};
 /// The tracer does the rest: it weights the local light by the share that
 /// is left, and pushes the rays sent on while the depth allows.
 pub trait Step: Sync {
+    /// The local light the surface `hit` sends back along `ray`; shadow
+    /// rays and the rays sent on go through `surface`.
     fn shade(&self, ray: &Ray, hit: &Hit, surface: &mut Surface) -> Vec3;
 
     /// Where the five rays of `--spp 5` go in a pixel, as offsets in
@@ -30,35 +37,36 @@ pub trait Step: Sync {
 /// A ray a step sends on from a surface, and its share of the light.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Secondary {
+    /// Reflection or refraction: how the ray left the surface.
     pub kind: RayKind,
+    /// Where it starts (already off the surface by `epsilon`) and where it goes.
     pub ray: Ray,
+    /// The share of the light arriving at the hit that it carries on.
     pub share: f32,
 }
-
-/// The most shadow rays a probe records per hit.
-const MAX_LOGGED_SHADOWS: usize = 4;
 
 /// What a step can do at a hit: look at the scene, cast shadow rays, and
 /// send rays on. One `Surface` is reused for every hit.
 pub struct Surface<'s> {
     scene: &'s Scene,
-    /// Who answers the shadow rays (see [`Tracer::with_query`]).
+    /// Who answers the shadow rays (see [`Tracer::with_query`]). A `dyn`,
+    /// not the tracer's `Q`, so that `Surface` has no type parameter and
+    /// [`Step::shade`] stays the signature a learner writes.
     objects: &'s dyn SceneQuery,
     epsilon: f32,
     sent: [Secondary; MAX_SECONDARIES],
     sent_len: usize,
     kept: f32,
     shadow_rays: u32,
-    /// Shadow rays and whether they were blocked, kept only for a probe.
-    logged_shadows: Option<([(Ray, bool); MAX_LOGGED_SHADOWS], usize)>,
+    /// The shadow rays of this hit, noted only for a probe.
+    shadow_log: ShadowLog,
 }
 
 impl<'s> Surface<'s> {
-    fn new(scene: &'s Scene, objects: &'s dyn SceneQuery, epsilon: f32, log: bool) -> Self {
-        let none = (Ray::new(Vec3::ZERO, Vec3::Z), false);
+    fn new(scene: &'s Scene, objects: &'s dyn SceneQuery, epsilon: f32) -> Self {
         let unsent = Secondary {
             kind: RayKind::Reflection,
-            ray: none.0,
+            ray: Ray::new(Vec3::ZERO, Vec3::Z),
             share: 0.0,
         };
         Surface {
@@ -69,7 +77,7 @@ impl<'s> Surface<'s> {
             sent_len: 0,
             kept: 1.0,
             shadow_rays: 0,
-            logged_shadows: log.then_some(([none; MAX_LOGGED_SHADOWS], 0)),
+            shadow_log: ShadowLog::off(),
         }
     }
 
@@ -77,9 +85,7 @@ impl<'s> Surface<'s> {
         self.sent_len = 0;
         self.kept = 1.0;
         self.shadow_rays = 0;
-        if let Some((_, len)) = &mut self.logged_shadows {
-            *len = 0;
-        }
+        self.shadow_log.clear();
     }
 
     /// The scene being rendered (for the sun, say).
@@ -97,12 +103,7 @@ impl<'s> Surface<'s> {
     pub fn trace_shadow_ray(&mut self, ray: Ray) -> bool {
         self.shadow_rays += 1;
         let blocked = self.objects.any_hit(&ray);
-        if let Some((log, len)) = &mut self.logged_shadows
-            && *len < MAX_LOGGED_SHADOWS
-        {
-            log[*len] = (ray, blocked);
-            *len += 1;
-        }
+        self.shadow_log.note(ray, blocked);
         blocked
     }
 
@@ -136,62 +137,6 @@ impl<'s> Surface<'s> {
     }
 }
 
-/// One traced ray, as a probe records it.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct TracedRay {
-    pub kind: RayKind,
-    pub depth: u32,
-    pub weight: f32,
-    pub ray: Ray,
-    /// What it hit and at which distance; `None` for the sky.
-    pub hit: Option<(Object, f32)>,
-    /// What it added to the pixel's colour (zero for shadow rays, whose
-    /// effect is in their parent's local light).
-    pub added: Vec3,
-    /// Index of the ray it came from in the same log.
-    pub parent: Option<usize>,
-}
-
-/// Counts of rays traced, by kind.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct RayCounts([u64; RayKind::ALL.len()]);
-
-impl RayCounts {
-    /// Count `n` more rays of this kind.
-    #[inline]
-    pub fn add(&mut self, kind: RayKind, n: u64) {
-        self.0[kind.index()] += n;
-    }
-
-    pub fn get(&self, kind: RayKind) -> u64 {
-        self.0[kind.index()]
-    }
-
-    pub fn total(&self) -> u64 {
-        self.0.iter().sum()
-    }
-}
-
-impl std::ops::Add for RayCounts {
-    type Output = RayCounts;
-    fn add(mut self, other: RayCounts) -> RayCounts {
-        for (a, b) in self.0.iter_mut().zip(other.0) {
-            *a += b;
-        }
-        self
-    }
-}
-
-impl std::ops::Sub for RayCounts {
-    type Output = RayCounts;
-    fn sub(mut self, other: RayCounts) -> RayCounts {
-        for (a, b) in self.0.iter_mut().zip(other.0) {
-            *a -= b;
-        }
-        self
-    }
-}
-
 /// The most rays (shadow rays included) traced for one primary ray.
 ///
 /// With the default `--epsilon` even `--max-depth 64` stays far below it.
@@ -204,6 +149,8 @@ pub const RAY_BUDGET: u32 = 4096;
 /// What tracing one primary ray gave.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Traced {
+    /// The light the ray tree brought to the pixel: every ray's weighted
+    /// sky or local light, summed in the order the rays were traced.
     pub colour: Vec3,
     /// The depth of the deepest ray traced (shadow rays do not count).
     pub deepest: u32,
@@ -230,9 +177,9 @@ pub struct Tracer<'s, S: Step + ?Sized, Q: SceneQuery = Scene> {
     max_depth: u32,
     stack: RayStack,
     surface: Surface<'s>,
-    counts: RayCounts,
-    log: Option<Vec<TracedRay>>,
-    by_depth: Option<[Vec3; MAX_DEPTH_LIMIT as usize + 1]>,
+    /// The bench's bookkeeping: rays counted by kind, and a probe's log
+    /// and the per-depth colours when asked for (`record.rs`).
+    record: Record,
 }
 
 impl<'s, S: Step + ?Sized> Tracer<'s, S> {
@@ -244,8 +191,9 @@ impl<'s, S: Step + ?Sized> Tracer<'s, S> {
 
 impl<'s, S: Step + ?Sized, Q: SceneQuery> Tracer<'s, S, Q> {
     /// A tracer whose rays ask `objects`, not the scene's list, what they
-    /// hit: a [`SceneQuery`] that gives the same answers faster (chapter
-    /// 9's tree of boxes). The scene still gives the sky and the sun.
+    /// hit: a [`SceneQuery`] that gives the same answers faster (a tree of
+    /// boxes around the objects, say). The scene still gives the sky and
+    /// the sun.
     pub fn with_query(
         scene: &'s Scene,
         objects: &'s Q,
@@ -263,48 +211,9 @@ impl<'s, S: Step + ?Sized, Q: SceneQuery> Tracer<'s, S, Q> {
             step,
             max_depth,
             stack: RayStack::default(),
-            surface: Surface::new(scene, objects, epsilon, false),
-            counts: RayCounts::default(),
-            log: None,
-            by_depth: None,
+            surface: Surface::new(scene, objects, epsilon),
+            record: Record::default(),
         }
-    }
-
-    /// Record every ray traced from now on, for a probe.
-    pub fn with_log(mut self) -> Self {
-        self.log = Some(Vec::new());
-        self.surface = Surface::new(self.scene, self.objects, self.surface.epsilon, true);
-        self
-    }
-
-    /// Also keep the colour every smaller max depth would have given (see
-    /// [`Tracer::colour_at_depth`]).
-    pub fn with_depth_colours(mut self) -> Self {
-        self.by_depth = Some([Vec3::ZERO; MAX_DEPTH_LIMIT as usize + 1]);
-        self
-    }
-
-    /// The rays traced so far, by kind.
-    pub fn counts(&self) -> RayCounts {
-        self.counts
-    }
-
-    /// The rays a probe recorded, in the order they were traced.
-    pub fn log(&self) -> &[TracedRay] {
-        self.log.as_deref().unwrap_or_default()
-    }
-
-    /// After [`Tracer::trace`] on a tracer made `with_depth_colours`: the
-    /// colour the same ray would have had with `max_depth = depth`.
-    ///
-    /// A ray's own contribution does not depend on the depth limit, and
-    /// removing the deeper rays does not reorder the others, so these are
-    /// the same sums, added in the same order, as separate renders.
-    pub fn colour_at_depth(&self, depth: u32) -> Option<Vec3> {
-        let by_depth = self.by_depth.as_ref()?;
-        (1..=self.max_depth)
-            .contains(&depth)
-            .then(|| by_depth[depth as usize])
     }
 
     // ANCHOR: trace
@@ -355,31 +264,28 @@ impl<'s, S: Step + ?Sized, Q: SceneQuery> Tracer<'s, S, Q> {
     }
     // ANCHOR_END: trace
 
-    /// A new pixel's tally, with the per-depth colours (if kept) cleared.
+    /// A new pixel's tally.
     fn start(&mut self) -> Traced {
-        if let Some(by_depth) = &mut self.by_depth {
-            by_depth.fill(Vec3::ZERO);
-        }
+        self.record.start();
         Traced::default()
     }
 
     /// Count a ray taken off the stack, and how deep the tree has gone.
     fn count(&mut self, traced: &mut Traced, pending: &PendingRay) {
-        self.counts.add(pending.kind, 1);
+        self.record.count(pending.kind, 1);
         traced.rays += 1;
         traced.deepest = traced.deepest.max(pending.depth);
     }
 
     /// Count the feelers the step just cast.
     fn count_shadow_rays(&mut self, traced: &mut Traced) {
-        self.counts
-            .add(RayKind::Shadow, u64::from(self.surface.shadow_rays));
-        traced.rays += self.surface.shadow_rays;
+        let shadow_rays = self.surface.shadow_rays;
+        self.record.count(RayKind::Shadow, u64::from(shadow_rays));
+        traced.rays += shadow_rays;
     }
 
-    /// Add a ray's contribution to the pixel, and to the probe's log and
-    /// the per-depth colours when those are kept. Returns the ray's index
-    /// in the log.
+    /// Add a ray's contribution to the pixel. Returns the ray's index in
+    /// the probe's log, if one is kept: the parent of the rays it sends on.
     fn add(
         &mut self,
         traced: &mut Traced,
@@ -388,37 +294,9 @@ impl<'s, S: Step + ?Sized, Q: SceneQuery> Tracer<'s, S, Q> {
         added: Vec3,
     ) -> Option<u32> {
         traced.colour += added;
-        if let Some(by_depth) = &mut self.by_depth {
-            for colour in &mut by_depth[pending.depth as usize..=self.max_depth as usize] {
-                *colour += added;
-            }
-        }
-        let log = self.log.as_mut()?;
-        let me = log.len();
-        log.push(TracedRay {
-            kind: pending.kind,
-            depth: pending.depth,
-            weight: pending.weight,
-            ray: pending.ray,
-            hit: hit.map(|h| (h.object, h.t)),
-            added,
-            parent: pending.parent.map(|p| p as usize),
-        });
-        if let (Some(_), Some((shadows, len))) = (hit, &self.surface.logged_shadows) {
-            for &(ray, _) in &shadows[..*len] {
-                let hit = self.objects.nearest_hit(&ray).map(|h| (h.object, h.t));
-                log.push(TracedRay {
-                    kind: RayKind::Shadow,
-                    depth: pending.depth,
-                    weight: pending.weight,
-                    ray,
-                    hit,
-                    added: Vec3::ZERO,
-                    parent: Some(me),
-                });
-            }
-        }
-        Some(me as u32)
+        let shadows = &self.surface.shadow_log;
+        self.record
+            .add(pending, hit, added, self.max_depth, shadows, self.objects)
     }
 }
 

@@ -35,9 +35,10 @@ pub fn splitmix64(x: u64) -> u64 {
     z ^ (z >> 31)
 }
 
-/// SplitMix64's golden ratio increment and its two mixing multipliers
-/// (an eight-lane SplitMix64 must use the same).
+/// SplitMix64's golden ratio increment (an eight-lane SplitMix64 must use
+/// the same).
 pub const SPLITMIX_GAMMA: u64 = 0x9e37_79b9_7f4a_7c15;
+/// SplitMix64's two mixing multipliers, in the order [`splitmix64`] uses them.
 pub const SPLITMIX_MIX: [u64; 2] = [0xbf58_476d_1ce4_e5b9, 0x94d0_49bb_1331_11eb];
 
 /// The generator for one sample's random choices of one kind.
@@ -76,6 +77,7 @@ impl PixelHash {
         self.0
     }
 
+    /// The hash of `seed` and the pixel in `column` and `row`.
     #[inline]
     pub fn new(seed: u64, (column, row): (u32, u32)) -> PixelHash {
         let pixel = (u64::from(column) << 32) | u64::from(row);

@@ -28,7 +28,7 @@ pub struct WorstZ {
 
 /// What the per-pixel z-test found, over every channel of every pixel.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Agreement {
+pub struct ZTest {
     /// Each pixel's z, per channel, row by row.
     pub z: Vec<[f64; 3]>,
     /// The pixel channels compared.
@@ -40,7 +40,7 @@ pub struct Agreement {
     pub worst: Option<WorstZ>,
 }
 
-impl Agreement {
+impl ZTest {
     /// The share of pixel channels with `|z| > FAR`.
     pub fn far_share(&self) -> f64 {
         self.far as f64 / self.values.max(1) as f64
@@ -56,7 +56,7 @@ impl Agreement {
 pub fn z_test(
     (a, var_a): (&LinearImage, &LinearImage),
     (b, var_b): (&LinearImage, &LinearImage),
-) -> Agreement {
+) -> ZTest {
     let size = (a.width(), a.height());
     for image in [var_a, b, var_b] {
         assert_eq!(
@@ -104,7 +104,7 @@ pub fn z_test(
         }
         z.push(zs);
     }
-    Agreement {
+    ZTest {
         values: 3 * z.len(),
         z,
         far,

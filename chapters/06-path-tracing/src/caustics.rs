@@ -3,7 +3,6 @@
 //! the photons near it (a density estimate).
 
 use rayon::prelude::*;
-use wide::{CmpLe, CmpLt, f32x8};
 
 use raylab::{Scene, Vec3};
 
@@ -34,7 +33,7 @@ pub(crate) struct Photon {
 }
 
 /// Photons as four columns of equal length, padded with powerless photons
-/// to a multiple of eight.
+/// so that a lookup can read its last run eight at a time.
 #[derive(Clone, Debug, Default)]
 struct PhotonColumns {
     u: Vec<f32>,
@@ -56,8 +55,9 @@ pub struct CausticMap {
     /// the end). Cells are numbered row by row, so the three cells of a row
     /// of the 3 × 3 block a lookup reads are one run of photons.
     cell_start: Vec<u32>,
-    /// The photons sorted by cell, as columns (structure of arrays, as in
-    /// chapter 7), so that a lookup reads eight of them at a time.
+    /// The photons sorted by cell, as columns (structure of arrays), so
+    /// that a lookup reads each quantity of consecutive photons from one
+    /// run of memory.
     photons: PhotonColumns,
     /// How many of the columns' photons are real (the rest is padding).
     kept: usize,
@@ -151,34 +151,40 @@ impl CausticMap {
         let cy = ((v + EXTENT) / h).floor() as i64;
         let last = self.cells as i64 - 1;
         // A bright caustic holds thousands of photons in a few cells, and
-        // every path that lands near it reads them all: eight at a time,
-        // each lane one photon, with masks for the ones outside the kernel
-        // or with too many bounces (and the padding, which has no power).
-        let (qu, qv) = (f32x8::splat(u), f32x8::splat(v));
-        let (h2, most) = (f32x8::splat(h * h), f32x8::splat(max_bounces as f32));
-        let mut sum = f32x8::ZERO;
+        // every path that lands near it reads them all. They are added as
+        // eight partial sums (the k-th photon of each group of eight adds
+        // to sum k) and the eight are added pairwise at the end, as the
+        // eight lanes of an AVX register add them. Floating-point addition
+        // is not associative: the order is the one the caustic images were
+        // made with, so it is part of them, and the compiler can keep the
+        // eight sums in one register.
+        let most = max_bounces as f32;
+        let mut sums = [0.0f32; 8];
         let (x0, x1) = ((cx - 1).max(0), (cx + 1).min(last));
         if x0 > x1 {
             return Vec3::ZERO; // beside the grid: no photon is that far out
         }
+        let photons = &self.photons;
         for y in (cy - 1).max(0)..=(cy + 1).min(last) {
             let row = (y * self.cells as i64) as usize;
             let start = self.cell_start[row + x0 as usize] as usize;
             let end = self.cell_start[row + x1 as usize + 1] as usize;
-            let photons = &self.photons;
             for i in (start..end).step_by(8) {
-                let eight = |column: &[f32]| f32x8::from(&column[i..i + 8]);
-                let (du, dv) = (eight(&photons.u) - qu, eight(&photons.v) - qv);
-                let d2 = du * du + dv * dv;
-                // Lanes past `end` are the next cells' photons: out of this run.
-                let lane = f32x8::from(std::array::from_fn::<f32, 8, _>(|k| (i + k) as f32));
-                let in_run = lane.cmp_lt(f32x8::splat(end as f32));
-                let counts = d2.cmp_lt(h2) & eight(&photons.bounces).cmp_le(most) & in_run;
-                let kernel = f32x8::ONE - d2 / h2;
-                sum += counts.blend(eight(&photons.power) * kernel, f32x8::ZERO);
+                let (pu, pv) = (&photons.u[i..i + 8], &photons.v[i..i + 8]);
+                let (bounces, power) = (&photons.bounces[i..i + 8], &photons.power[i..i + 8]);
+                for (k, sum) in sums.iter_mut().enumerate() {
+                    let (du, dv) = (pu[k] - u, pv[k] - v);
+                    let d2 = du * du + dv * dv;
+                    // Past `end` are the next cells' photons: out of this run.
+                    let counts = d2 < h * h && bounces[k] <= most && i + k < end;
+                    let kernel = 1.0 - d2 / (h * h);
+                    *sum += if counts { power[k] * kernel } else { 0.0 };
+                }
             }
         }
-        Vec3::splat(sum.reduce_add() * (2.0 / (std::f32::consts::PI * h * h)))
+        let [s0, s1, s2, s3, s4, s5, s6, s7] = sums;
+        let sum = ((s0 + s4) + (s2 + s6)) + ((s1 + s5) + (s3 + s7));
+        Vec3::splat(sum * (2.0 / (std::f32::consts::PI * h * h)))
     }
     // ANCHOR_END: density
 }
@@ -307,9 +313,31 @@ mod tests {
     }
 
     #[test]
-    fn the_eight_at_a_time_sum_equals_the_photon_by_photon_sum() {
+    fn the_density_estimate_adds_its_photons_in_eight_partial_sums_paired_as_the_lanes_are() {
+        // Nine photons on the query point (kernel 1), kept apart by their
+        // bounces (1 to 9), which also orders them in their run. The first
+        // carries 2²⁴, the others 1: a 1 added to 2²⁴ alone is rounded away
+        // (2²⁴ + 1 is halfway, and ties go to the even 2²⁴).
+        let scene = Scene::lab();
+        let photons = (1..=9)
+            .map(|b| photon_at(0.0, 0.0, if b == 1 { 16_777_216.0 } else { 1.0 }, b))
+            .collect();
+        let map = CausticMap::from_photons(&scene, photons, 9, 9);
+        assert_eq!(map.len(), 9);
+        // Sum 0 holds photons 1 and 9: 2²⁴ + 1 = 2²⁴. Sums 1 to 7 hold 1
+        // each. Paired ((s0 + s4) + (s2 + s6)) + ((s1 + s5) + (s3 + s7)):
+        // (2²⁴ + 2) + 4 = 2²⁴ + 6, where a photon-by-photon sum gives 2²⁴
+        // and two sums of four (s0 + … + s3) + (s4 + … + s7) give 2²⁴ + 4.
+        let h = KERNEL_RADIUS;
+        let expected = 16_777_222.0 * (2.0 / (std::f32::consts::PI * h * h));
+        assert_eq!(map.irradiance(scene.ground.plane.point, 10).x, expected);
+    }
+
+    #[test]
+    fn the_density_estimate_counts_exactly_the_photons_within_the_kernel_and_the_bounces() {
         // Many photons over a few cells, some beyond the kernel, some with
-        // too many bounces: the lanes must count exactly the right ones.
+        // too many bounces, runs that end inside a group of eight: the
+        // eight partial sums must count exactly the right ones.
         let scene = Scene::lab();
         // Each photon in a bin of its own (the centre of bin (i, j)), so
         // that merging leaves them as they are.
@@ -337,10 +365,10 @@ mod tests {
                 })
                 .sum::<f32>()
                 * (2.0 / (std::f32::consts::PI * h * h));
-            let lanes = map.irradiance(ground_point(&scene, qu, qv), 2).x;
+            let estimate = map.irradiance(ground_point(&scene, qu, qv), 2).x;
             assert!(
-                (lanes - one_by_one).abs() <= 1e-4 * one_by_one.max(1.0),
-                "{lanes} against {one_by_one}"
+                (estimate - one_by_one).abs() <= 1e-4 * one_by_one.max(1.0),
+                "{estimate} against {one_by_one}"
             );
         }
     }

@@ -17,8 +17,8 @@ use crate::caustics::CausticMap;
 use crate::random::Random;
 use crate::sun::Sunlight;
 
-/// `--materials`: what the lab's three shares mean physically.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+/// What the lab's three shares mean physically (`--materials`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Materials {
     /// The lab's shares as a mixture of three BSDFs, whatever the angle.
     Lab,
@@ -27,6 +27,10 @@ pub enum Materials {
 }
 
 impl Materials {
+    /// Both meanings, in the order `--help` lists them.
+    pub const ALL: [Materials; 2] = [Materials::Lab, Materials::Fresnel];
+
+    /// The name `--materials` takes and the reports print.
     pub fn name(self) -> &'static str {
         match self {
             Materials::Lab => "lab",

@@ -61,6 +61,24 @@ pub struct Flags {
     pub caustics: bool,
 }
 
+/// `--materials` on the command line: the physics file's [`Materials`]
+/// knows nothing of clap, so its names and help are given here.
+impl clap::ValueEnum for Materials {
+    fn value_variants<'a>() -> &'a [Self] {
+        &Materials::ALL
+    }
+
+    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+        let help = match self {
+            Materials::Lab => "The lab's shares as a mixture of three BSDFs, whatever the angle",
+            Materials::Fresnel => {
+                "A transmitting material splits its specular share by exact Fresnel"
+            }
+        };
+        Some(clap::builder::PossibleValue::new(self.name()).help(help))
+    }
+}
+
 fn parse_sun_size(text: &str) -> Result<f32, String> {
     match text.parse::<f32>() {
         Ok(d) if d.is_finite() && d > 0.0 && d <= MAX_SUN_SIZE => Ok(d),

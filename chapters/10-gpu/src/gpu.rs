@@ -48,8 +48,8 @@ pub enum GpuError {
     Failed(String),
 }
 
-/// A compiled tracer, ready to dispatch.
-pub struct Tracer {
+/// The tracer compiled for the GPU: a compute pipeline, ready to dispatch.
+pub struct Pipeline {
     pub pipeline: wgpu::ComputePipeline,
     /// The shader's name in messages: `tracer.wgsl`, or the `--shader` file.
     pub name: String,
@@ -188,7 +188,7 @@ impl Gpu {
     /// Check the shader with naga (a mistake is one line with its place),
     /// then compile it for this GPU with its ray stack sized for
     /// `max_depth`.
-    pub fn compile(&self, source: &Source, max_depth: u32) -> Result<Tracer, ShaderError> {
+    pub fn compile(&self, source: &Source, max_depth: u32) -> Result<Pipeline, ShaderError> {
         let start = Instant::now();
         let source = &source.with_stack_size(max_depth);
         shader::check(source)?;
@@ -218,7 +218,7 @@ impl Gpu {
                 message: one_line(&error.to_string()),
             });
         }
-        let tracer = Tracer {
+        let tracer = Pipeline {
             pipeline,
             name: source.name.clone(),
             max_depth,
@@ -242,7 +242,7 @@ impl Gpu {
                 file: source.name.clone(),
                 message: error.to_string(),
             })?;
-        Ok(Tracer {
+        Ok(Pipeline {
             compile_time: start.elapsed(),
             ..tracer
         })
@@ -251,7 +251,7 @@ impl Gpu {
     /// Render one frame: upload `inputs`, run one invocation per pixel,
     /// read the colours, maps and counts back. An image too big for one
     /// storage buffer goes in bands of rows, one dispatch each.
-    pub fn render(&self, tracer: &Tracer, inputs: &Inputs) -> Result<Frame, GpuError> {
+    pub fn render(&self, tracer: &Pipeline, inputs: &Inputs) -> Result<Frame, GpuError> {
         let limits = self.device.limits();
         let limit = limits
             .max_storage_buffer_binding_size
@@ -275,7 +275,7 @@ impl Gpu {
     /// [`Gpu::render`] in bands of at most `rows_per_band` rows.
     pub fn render_in_bands(
         &self,
-        tracer: &Tracer,
+        tracer: &Pipeline,
         inputs: &Inputs,
         rows_per_band: u32,
     ) -> Result<Frame, GpuError> {
@@ -319,7 +319,7 @@ impl Gpu {
 
     /// The buffers a band's pixels keep their work in between dispatches,
     /// for bands of up to `pixels` pixels: made once per frame.
-    fn work_buffers(&self, tracer: &Tracer, pixels: u64) -> WorkBuffers {
+    fn work_buffers(&self, tracer: &Pipeline, pixels: u64) -> WorkBuffers {
         let buffer = |label, size, usage| {
             self.device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some(label),
@@ -350,7 +350,7 @@ impl Gpu {
     /// One band of `rows` rows from `first_row` down.
     fn render_band(
         &self,
-        tracer: &Tracer,
+        tracer: &Pipeline,
         inputs: &Inputs,
         work: &WorkBuffers,
         first_row: u32,

@@ -13,7 +13,7 @@ use raylab_cli::output::save_png;
 use raylab_cli::{CliError, CommonFlags, prepare_out_dir};
 
 use crate::BINARY;
-use crate::gpu::{Gpu, GpuError, Tracer};
+use crate::gpu::{Gpu, GpuError, Pipeline};
 use crate::like::Like;
 use crate::scene_buffer::{self, PackError};
 use crate::shader::ShaderError;
@@ -66,7 +66,7 @@ pub struct Framed {
 /// and encode it: the image and its maps, nothing written.
 pub fn render_image(
     gpu: &Gpu,
-    tracer: &Tracer,
+    tracer: &Pipeline,
     like: Like,
     settings: &Settings,
     (scene, camera): &(Scene, Camera),
@@ -130,7 +130,7 @@ pub fn render_image(
 /// unless `--no-diagrams`, the heat maps of depth and rays).
 pub fn render(
     gpu: &Gpu,
-    tracer: &Tracer,
+    tracer: &Pipeline,
     like: Like,
     options: &CommonFlags,
     scene: &(Scene, Camera),
@@ -168,7 +168,7 @@ pub fn render(
 }
 
 /// The summary line, the times of the frame's parts, and the files.
-pub fn report_text(report: &Report, tracer: &Tracer, gpu: &Gpu) -> String {
+pub fn report_text(report: &Report, tracer: &Pipeline, gpu: &Gpu) -> String {
     let ms = |d: Duration| d.as_secs_f64() * 1e3;
     let names: Vec<String> = report
         .written

@@ -15,7 +15,7 @@ use raylab_cli::saves::{Saves, Watched, ctrl_c};
 use raylab_cli::{CliError, CommonFlags};
 
 use crate::BINARY;
-use crate::gpu::{Gpu, Tracer};
+use crate::gpu::{Gpu, Pipeline};
 use crate::like::Like;
 use crate::run::{self, Error};
 use crate::shader::Source;
@@ -24,7 +24,7 @@ use crate::shader::Source;
 /// given), rendering again after every save, until Ctrl-C.
 pub fn watch(
     gpu: &Gpu,
-    mut tracer: Tracer,
+    mut tracer: Pipeline,
     like: Like,
     options: &CommonFlags,
     shader: Option<&Path>,
@@ -84,7 +84,7 @@ pub fn watch(
 
 fn render_and_print(
     gpu: &Gpu,
-    tracer: &Tracer,
+    tracer: &Pipeline,
     like: Like,
     options: &CommonFlags,
     scene: &(Scene, Camera),

@@ -8,7 +8,7 @@ use std::time::Duration;
 use raylab_cli::output::save_png;
 
 use crate::error::ExploreError;
-use crate::script::Step;
+use crate::script::Instruction;
 use crate::state::{Action, Explorer};
 
 /// The most frames `settle` renders: path tracing at 1024 paths per pixel.
@@ -26,14 +26,14 @@ pub enum Tick {
 }
 
 pub struct Driver {
-    steps: VecDeque<Step>,
+    steps: VecDeque<Instruction>,
     wait: u32,
     /// Where `w` writes.
     pub out_dir: PathBuf,
 }
 
 impl Driver {
-    pub fn new(steps: VecDeque<Step>, out_dir: PathBuf) -> Driver {
+    pub fn new(steps: VecDeque<Instruction>, out_dir: PathBuf) -> Driver {
         Driver {
             steps,
             wait: 0,
@@ -54,20 +54,20 @@ impl Driver {
         }
         while let Some(step) = self.steps.pop_front() {
             match step {
-                Step::Input(input) => {
+                Instruction::Input(input) => {
                     let action = explorer.handle(input);
                     if act(explorer, action, &self.out_dir) {
                         return Ok(Tick::Quit);
                     }
                     return Ok(Tick::Busy);
                 }
-                Step::Frames(0) => {}
-                Step::Frames(n) => {
+                Instruction::Frames(0) => {}
+                Instruction::Frames(n) => {
                     self.wait = n - 1;
                     return Ok(Tick::Busy);
                 }
-                Step::Settle => return Ok(Tick::Settle),
-                Step::Shot(path) => write_shot(explorer, &path)?,
+                Instruction::Settle => return Ok(Tick::Settle),
+                Instruction::Shot(path) => write_shot(explorer, &path)?,
             }
         }
         Ok(Tick::Done)

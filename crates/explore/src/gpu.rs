@@ -17,7 +17,7 @@ use std::collections::HashMap;
 use std::collections::hash_map::Entry;
 use std::time::Duration;
 
-use ch10_gpu::gpu::{Gpu, Tracer};
+use ch10_gpu::gpu::{Gpu, Pipeline};
 use ch10_gpu::run::render_image;
 use ch10_gpu::scene_buffer::{self, PackError};
 use ch10_gpu::shader::Source;
@@ -142,7 +142,7 @@ impl Comparison {
 #[derive(Default)]
 pub struct GpuHalf {
     device: Option<Result<Gpu, String>>,
-    tracers: HashMap<u32, Tracer>,
+    tracers: HashMap<u32, Pipeline>,
 }
 
 impl GpuHalf {

@@ -21,7 +21,7 @@ use crate::knobs::Knobs;
 
 /// How far an image has come.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Progress {
+pub enum Refinement {
     /// Something changed: the image is out of date.
     Stale,
     /// One ray per pixel, drawn while the camera moves.
@@ -91,7 +91,7 @@ pub struct Job {
 #[derive(Clone, Debug)]
 pub struct CpuImage {
     pub image: RgbImage,
-    pub progress: Progress,
+    pub progress: Refinement,
     pub stats: Stats,
 }
 
@@ -162,9 +162,9 @@ fn cpu_image(job: &Job, part: CpuJob) -> CpuImage {
             CpuImage {
                 image: rendered.srgb,
                 progress: if preview {
-                    Progress::Preview
+                    Refinement::Preview
                 } else {
-                    Progress::Done
+                    Refinement::Done
                 },
                 stats: Stats {
                     frame: start.elapsed(),
@@ -192,7 +192,7 @@ fn cpu_image(job: &Job, part: CpuJob) -> CpuImage {
                 });
             CpuImage {
                 image,
-                progress: Progress::Paths { sum, passes },
+                progress: Refinement::Paths { sum, passes },
                 stats: Stats {
                     frame: start.elapsed(),
                     rays: render.rays,

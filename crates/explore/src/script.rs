@@ -26,8 +26,10 @@ use crate::input::{Button, Input, Key};
 /// Steps of a drag: enough for the orbit to move in a few frames.
 const DRAG_STEPS: u32 = 8;
 
+/// One word of a script: an input, frames to render, waiting for the
+/// image to settle, or a screenshot.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Step {
+pub enum Instruction {
     Input(Input),
     Frames(u32),
     Settle,
@@ -35,7 +37,7 @@ pub enum Step {
 }
 
 /// Parse a script; the error names the word that is wrong.
-pub fn parse(text: &str) -> Result<VecDeque<Step>, ExploreError> {
+pub fn parse(text: &str) -> Result<VecDeque<Instruction>, ExploreError> {
     let mut steps = VecDeque::new();
     for word in text.split_whitespace() {
         let (verb, arg) = word.split_once(':').unwrap_or((word, ""));
@@ -55,19 +57,22 @@ pub fn parse(text: &str) -> Result<VecDeque<Step>, ExploreError> {
             Ok(values)
         };
         match verb {
-            "key" => steps.push_back(Step::Input(Input::Key(key(arg).ok_or_else(|| {
-                bad("a key is one character, or up, down, left, right, home, esc")
-            })?))),
+            "key" => steps.push_back(Instruction::Input(Input::Key(key(arg).ok_or_else(
+                || bad("a key is one character, or up, down, left, right, home, esc"),
+            )?))),
             "keys" if !arg.is_empty() => {
-                steps.extend(arg.chars().map(|c| Step::Input(Input::Key(Key::Char(c)))));
+                steps.extend(
+                    arg.chars()
+                        .map(|c| Instruction::Input(Input::Key(Key::Char(c)))),
+                );
             }
             "click" => {
                 let v = numbers(2)?;
                 let (x, y) = (v[0], v[1]);
                 let button = Button::Left;
-                steps.push_back(Step::Input(Input::Move { x, y }));
-                steps.push_back(Step::Input(Input::Press { button, x, y }));
-                steps.push_back(Step::Input(Input::Release { button, x, y }));
+                steps.push_back(Instruction::Input(Input::Move { x, y }));
+                steps.push_back(Instruction::Input(Input::Press { button, x, y }));
+                steps.push_back(Instruction::Input(Input::Release { button, x, y }));
             }
             "drag" | "pan" => {
                 let v = numbers(4)?;
@@ -77,25 +82,25 @@ pub fn parse(text: &str) -> Result<VecDeque<Step>, ExploreError> {
                     Button::Right
                 };
                 let (x, y) = (v[0], v[1]);
-                steps.push_back(Step::Input(Input::Press { button, x, y }));
+                steps.push_back(Instruction::Input(Input::Press { button, x, y }));
                 for i in 1..=DRAG_STEPS {
                     let t = f64::from(i) / f64::from(DRAG_STEPS);
                     let (x, y) = (v[0] + (v[2] - v[0]) * t, v[1] + (v[3] - v[1]) * t);
-                    steps.push_back(Step::Input(Input::Move { x, y }));
+                    steps.push_back(Instruction::Input(Input::Move { x, y }));
                 }
                 let (x, y) = (v[2], v[3]);
-                steps.push_back(Step::Input(Input::Release { button, x, y }));
+                steps.push_back(Instruction::Input(Input::Release { button, x, y }));
             }
             "wheel" => {
                 let steps_turned = numbers(1)?[0] as f32;
-                steps.push_back(Step::Input(Input::Wheel(steps_turned)));
+                steps.push_back(Instruction::Input(Input::Wheel(steps_turned)));
             }
             "resize" => {
                 let v = numbers(2)?;
                 if v.iter().any(|&n| !(0.0..=16_384.0).contains(&n)) {
                     return Err(bad("a size is 0 to 16384 pixels a side"));
                 }
-                steps.push_back(Step::Input(Input::Resize {
+                steps.push_back(Instruction::Input(Input::Resize {
                     width: v[0] as u32,
                     height: v[1] as u32,
                 }));
@@ -104,11 +109,11 @@ pub fn parse(text: &str) -> Result<VecDeque<Step>, ExploreError> {
                 let n = arg
                     .parse::<u32>()
                     .map_err(|_| bad("needs a whole number of frames"))?;
-                steps.push_back(Step::Frames(n));
+                steps.push_back(Instruction::Frames(n));
             }
-            "settle" => steps.push_back(Step::Settle),
-            "shot" if !arg.is_empty() => steps.push_back(Step::Shot(PathBuf::from(arg))),
-            "save" => steps.push_back(Step::Input(Input::Key(Key::Char('w')))),
+            "settle" => steps.push_back(Instruction::Settle),
+            "shot" if !arg.is_empty() => steps.push_back(Instruction::Shot(PathBuf::from(arg))),
+            "save" => steps.push_back(Instruction::Input(Input::Key(Key::Char('w')))),
             _ => {
                 return Err(bad(
                     "unknown word: use key, keys, click, drag, pan, wheel, resize, frames, settle, shot or save",
@@ -147,10 +152,13 @@ mod tests {
         let steps =
             parse("key:3 key:up keys:re click:10,20 drag:0,0,80,0 frames:2 settle shot:a.png")
                 .unwrap();
-        assert_eq!(steps[0], Step::Input(Input::Key(Key::Char('3'))));
-        assert_eq!(steps[1], Step::Input(Input::Key(Key::Up)));
+        assert_eq!(steps[0], Instruction::Input(Input::Key(Key::Char('3'))));
+        assert_eq!(steps[1], Instruction::Input(Input::Key(Key::Up)));
         assert_eq!(steps.len(), 2 + 2 + 3 + (DRAG_STEPS as usize + 2) + 3);
-        assert_eq!(steps.back(), Some(&Step::Shot(PathBuf::from("a.png"))));
+        assert_eq!(
+            steps.back(),
+            Some(&Instruction::Shot(PathBuf::from("a.png")))
+        );
     }
 
     #[test]

@@ -23,7 +23,7 @@ use crate::knobs::Knobs;
 use crate::orbit::View;
 use crate::probe::Probe;
 pub use crate::render::Stats;
-use crate::render::{CpuJob, Frame, GpuJob, Job, Progress, Render, Renderer};
+use crate::render::{CpuJob, Frame, GpuJob, Job, Refinement, Render, Renderer};
 use crate::source::{Loaded, Source};
 
 /// Degrees the orbit turns per pixel dragged.
@@ -58,7 +58,7 @@ pub struct Explorer {
     width: u32,
     height: u32,
     image: RgbImage,
-    progress: Progress,
+    progress: Refinement,
     camera_moved: bool,
     drag: Option<Drag>,
     pointer: (f64, f64),
@@ -93,7 +93,7 @@ impl Explorer {
             width,
             height,
             image: RgbImage::new(width, height),
-            progress: Progress::Stale,
+            progress: Refinement::Stale,
             camera_moved: false,
             drag: None,
             pointer: (0.0, 0.0),
@@ -163,10 +163,10 @@ impl Explorer {
     /// Rays (or paths) per pixel in the image now, and the count asked for.
     pub fn samples(&self) -> (u32, u32) {
         let done = match &self.progress {
-            Progress::Stale => 0,
-            Progress::Preview => 1,
-            Progress::Done => self.knobs.spp,
-            Progress::Paths { passes, .. } => *passes,
+            Refinement::Stale => 0,
+            Refinement::Preview => 1,
+            Refinement::Done => self.knobs.spp,
+            Refinement::Paths { passes, .. } => *passes,
         };
         (done, self.knobs.spp)
     }
@@ -174,8 +174,8 @@ impl Explorer {
     /// Whether the image has reached what the knobs ask for.
     pub fn is_settled(&self) -> bool {
         match &self.progress {
-            Progress::Done => true,
-            Progress::Paths { passes, .. } => *passes >= self.knobs.spp,
+            Refinement::Done => true,
+            Refinement::Paths { passes, .. } => *passes >= self.knobs.spp,
             _ => false,
         }
     }
@@ -184,7 +184,7 @@ impl Explorer {
     pub fn wants_frame(&self) -> bool {
         // A preview held still with the button down waits for the release.
         let waiting =
-            self.progress == Progress::Preview && self.drag.is_some() && !self.camera_moved;
+            self.progress == Refinement::Preview && self.drag.is_some() && !self.camera_moved;
         let settled = self.is_settled() && !self.gpu.is_pending();
         !(self.hidden || settled || waiting)
     }
@@ -311,12 +311,12 @@ impl Explorer {
 
     fn camera_changed(&mut self) {
         self.camera_moved = true;
-        self.progress = Progress::Stale;
+        self.progress = Refinement::Stale;
         self.generation += 1;
     }
 
     fn knobs_changed(&mut self) {
-        self.progress = Progress::Stale;
+        self.progress = Refinement::Stale;
         self.generation += 1;
         if let Some(probe) = &self.probe {
             let (pixel, camera) = (probe.pixel, probe.camera);
@@ -390,7 +390,7 @@ impl Explorer {
         self.view.set_home(loaded.camera, loaded.target);
         self.probe = None;
         self.status = None;
-        self.progress = Progress::Stale;
+        self.progress = Refinement::Stale;
         self.generation += 1;
     }
 
@@ -439,7 +439,7 @@ impl Explorer {
                 Ok(job) => Some(job),
                 Err(error) => {
                     self.status = Some(error.to_string());
-                    self.progress = Progress::Done;
+                    self.progress = Refinement::Done;
                     return None;
                 }
             }
@@ -469,7 +469,7 @@ impl Explorer {
         }
         let pixels = (self.width * self.height) as usize;
         let (sum, passes) = match &self.progress {
-            Progress::Paths { sum, passes } if !moving && sum.len() == pixels => {
+            Refinement::Paths { sum, passes } if !moving && sum.len() == pixels => {
                 (sum.clone(), *passes)
             }
             _ => (vec![Vec3::ZERO; pixels], 0),

@@ -27,7 +27,8 @@ use crate::worker::Worker;
 /// How often an idle explorer wakes to look at the scene file.
 const IDLE_WAKE: Duration = Duration::from_millis(50);
 
-type Surface = softbuffer::Surface<Rc<Window>, Rc<Window>>;
+/// The window's pixels, which the explorer writes on the CPU and shows.
+type WindowPixels = softbuffer::Surface<Rc<Window>, Rc<Window>>;
 
 /// What the window run is asked for besides the explorer.
 pub struct Run {
@@ -46,7 +47,7 @@ struct App {
     live: Live,
     watch: Option<SceneWatch>,
     screenshot: Option<PathBuf>,
-    window: Option<(Rc<Window>, Surface)>,
+    window: Option<(Rc<Window>, WindowPixels)>,
     pointer: (f64, f64),
     /// The frame last put on the screen.
     last: Option<RgbImage>,

@@ -495,7 +495,7 @@ fn the_book_figures_keys_set_what_their_names_say() {
             .unwrap();
         let mut explorer = explorer();
         for step in raylab_explore::script::parse(&text).unwrap() {
-            if let raylab_explore::script::Step::Input(input @ Input::Key(_)) = step {
+            if let raylab_explore::script::Instruction::Input(input @ Input::Key(_)) = step {
                 explorer.handle(input);
             }
         }

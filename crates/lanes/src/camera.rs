@@ -10,6 +10,7 @@ use crate::vec3x8::Vec3x8;
 /// so the directions are the same to the bit.
 #[derive(Clone, Copy, Debug)]
 pub struct CameraX8 {
+    /// The camera's eye in every lane: where every primary ray starts.
     pub eye: Vec3x8,
     size: (f32x8, f32x8),
     aspect: f32x8,
@@ -20,6 +21,7 @@ pub struct CameraX8 {
 }
 
 impl CameraX8 {
+    /// The camera's rays for a `width` × `height` image, eight at a time.
     pub fn new(camera: &Camera, width: u32, height: u32) -> Self {
         let (w, h) = (width as f32, height as f32);
         CameraX8 {

@@ -6,8 +6,9 @@
 //! same arithmetic in the same order, so that their images are the core's
 //! to the bit. This crate holds what both need, once: eight vectors side
 //! by side, the camera, the scene, the sky and the optics in lanes, and
-//! the samples' generators eight at a time. It depends on the core and
-//! nothing depends on it but the fast chapters and the bench.
+//! the samples' generators eight at a time. It depends on the core; only
+//! the code that traces eight rays at a time depends on it (chapters 7 and
+//! 8, and chapter 9's eight-lane search).
 //!
 //! ## The map of mirrors
 //!
@@ -37,6 +38,8 @@
 //! Every "to the bit" rests on one build flag: the workspace compiles
 //! without FMA (`.cargo/config.toml`), so that `a·b + c` rounds twice in
 //! lanes as it does in scalar code.
+
+#![warn(missing_docs)]
 
 pub mod camera;
 pub mod light;

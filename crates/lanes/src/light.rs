@@ -13,6 +13,7 @@ pub struct SkyX8 {
 }
 
 impl SkyX8 {
+    /// The scalar sky's two colours, in every lane.
     pub fn new(sky: &Sky) -> Self {
         SkyX8 {
             horizon: Vec3x8::splat(sky.horizon),

@@ -32,6 +32,7 @@ pub struct U64x8 {
 }
 
 impl U64x8 {
+    /// `x` in every lane.
     pub fn splat(x: u64) -> U64x8 {
         U64x8 {
             hi: u32x8::splat((x >> 32) as u32),
@@ -39,6 +40,7 @@ impl U64x8 {
         }
     }
 
+    /// `x[l]` in lane `l`.
     pub fn new(x: [u64; LANES]) -> U64x8 {
         U64x8 {
             hi: u32x8::new(x.map(|x| (x >> 32) as u32)),
@@ -46,6 +48,7 @@ impl U64x8 {
         }
     }
 
+    /// The eight numbers again, lane `l` at index `l`.
     pub fn to_array(self) -> [u64; LANES] {
         let (hi, lo) = (self.hi.to_array(), self.lo.to_array());
         std::array::from_fn(|l| (u64::from(hi[l]) << 32) | u64::from(lo[l]))
@@ -112,7 +115,7 @@ impl U64x8 {
     }
 }
 
-/// [`splitmix64`](super::splitmix64) in every lane.
+/// [`splitmix64`](raylab::sampling::splitmix64) in every lane.
 #[inline]
 pub fn splitmix64_x8(x: U64x8) -> U64x8 {
     let z = x.add(U64x8::splat(SPLITMIX_GAMMA));
@@ -156,7 +159,7 @@ impl Pcg32x8 {
         (xorshifted >> rotate) | (xorshifted << ((u32x8::splat(32) - rotate) & u32x8::splat(31)))
     }
 
-    /// [`unit_f32`](super::unit_f32) in the lanes of `mask`.
+    /// [`unit_f32`](raylab::sampling::unit_f32) in the lanes of `mask`.
     #[inline]
     pub fn uniform(&mut self, mask: u32x8) -> f32x8 {
         let top = (self.next_u32(mask) >> 8u32).to_array();

@@ -18,8 +18,9 @@ use wide::{CmpEq, CmpGe, CmpLt, CmpNe, f32x8};
 use crate::shapes::{plane_hits, sphere_hits};
 use crate::vec3x8::Vec3x8;
 
-/// Object numbers in a lane: nothing hit, the ground, sphere `k` is `k + 1`.
+/// The object number of a lane whose ray hit nothing (sphere `k` is `k + 1`).
 pub const NOTHING: f32 = -1.0;
+/// The object number of a lane whose ray hit the ground.
 pub const GROUND: f32 = 0.0;
 
 /// A sphere and its material, each number in all eight lanes.
@@ -70,6 +71,7 @@ pub trait SceneQueryX8: SceneQuery + std::fmt::Debug {
 /// What eight rays hit, lane by lane.
 #[derive(Clone, Copy, Debug)]
 pub struct Hits {
+    /// The distance along each ray to its hit (unread where there is none).
     pub t: f32x8,
     /// [`NOTHING`], [`GROUND`] or a sphere's number plus one.
     pub object: f32x8,
@@ -98,16 +100,25 @@ impl Hits {
 /// unread.
 #[derive(Clone, Copy, Debug)]
 pub struct Surfaces {
+    /// Where each ray meets its surface.
     pub point: Vec3x8,
+    /// The unit normal out of the object hit (`n`).
     pub normal: Vec3x8,
+    /// The unit normal on the side the ray comes from (`nf`).
     pub facing_normal: Vec3x8,
     /// Set where the ray arrives from outside (`dot(d, n) < 0`).
     pub entering: f32x8,
+    /// Set where the ray hit the ground, whose albedo is the checker's.
     pub on_ground: f32x8,
+    /// The surface's albedo (the checker's colour on the ground).
     pub albedo: Vec3x8,
+    /// `albedo / π`, divided as the scalar code divides it.
     pub albedo_over_pi: Vec3x8,
+    /// The material's mirror share `r`.
     pub reflection: f32x8,
+    /// The material's glass share `t`.
     pub transmission: f32x8,
+    /// The material's index of refraction.
     pub ior: f32x8,
     /// Set where the material has a mirror or glass share to choose.
     pub chooses: f32x8,

@@ -14,13 +14,18 @@ pub const LANES: usize = 8;
 /// Eight vectors, one per lane.
 #[derive(Clone, Copy, Debug)]
 pub struct Vec3x8 {
+    /// The eight vectors' x components.
     pub x: f32x8,
+    /// Their y components.
     pub y: f32x8,
+    /// Their z components.
     pub z: f32x8,
 }
 
 impl Vec3x8 {
+    /// The zero vector in every lane.
     pub const ZERO: Vec3x8 = Vec3x8::splat_const(0.0);
+    /// `(1, 1, 1)` in every lane: white, as a colour.
     pub const ONE: Vec3x8 = Vec3x8::splat_const(1.0);
 
     const fn splat_const(v: f32) -> Vec3x8 {

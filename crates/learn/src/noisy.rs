@@ -9,7 +9,7 @@ use std::io::Write;
 use std::path::Path;
 use std::sync::{Arc, Mutex};
 
-use ch06_path_tracing::agreement::{Agreement, FAR, WorstZ, z_test};
+use ch06_path_tracing::agreement::{FAR, WorstZ, ZTest, z_test};
 use ch06_path_tracing::exr::load_exr;
 use image::RgbImage;
 use raylab::linear_image::LinearImage;
@@ -53,8 +53,8 @@ impl NoiseAgreement {
     }
 }
 
-impl From<&Agreement> for NoiseAgreement {
-    fn from(a: &Agreement) -> Self {
+impl From<&ZTest> for NoiseAgreement {
+    fn from(a: &ZTest) -> Self {
         NoiseAgreement {
             values: a.values,
             far: a.far,
@@ -169,7 +169,7 @@ pub fn judge(
 
 /// Each pixel's z as a picture: black within the noise, red where the
 /// learner's is brighter, blue where darker, by its channel furthest off.
-pub fn z_map(agreement: &Agreement, width: u32) -> RgbImage {
+pub fn z_map(agreement: &ZTest, width: u32) -> RgbImage {
     let height = agreement.z.len() as u32 / width.max(1);
     RgbImage::from_fn(width, height, |x, y| {
         let z = agreement.z[(y * width + x) as usize];
@@ -188,7 +188,7 @@ mod tests {
 
     #[test]
     fn the_z_map_is_red_where_the_learner_is_brighter_and_blue_where_darker() {
-        let agreement = Agreement {
+        let agreement = ZTest {
             z: vec![[8.0, 0.0, 0.0], [0.5, -9.0, 1.0], [0.0; 3]],
             values: 9,
             far: 2,
