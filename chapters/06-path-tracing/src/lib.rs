@@ -27,4 +27,4 @@ pub mod sun;
 
 pub use integrator::{Materials, PathTracer, Terms};
 pub use render::{PathRender, PathSettings, render_paths, render_paths_with, render_with};
-pub use run::{Flags, PROGRAM, PathProgram, main, main_with_args, run};
+pub use run::{Flags, PROGRAM, PathProgram, main, run, run_matches};

@@ -254,29 +254,30 @@ pub fn report_text(binary: &str, report: &PathReport) -> String {
 /// parse, render, write, report; bad input gives one line on stderr and
 /// exit code 2.
 pub fn main(program: &PathProgram) -> ExitCode {
-    main_with_args(program, std::env::args_os())
+    let binary = program.program.binary;
+    cli::main_of(
+        binary,
+        command(&program.program),
+        std::env::args_os(),
+        |matches| run_matches(program, matches),
+    )
 }
 
-/// [`main`], with the command line given (the program's name first): for
-/// a program that takes some flags of its own out first (chapter 9).
-pub fn main_with_args(
-    program: &PathProgram,
-    args: impl IntoIterator<Item = std::ffi::OsString>,
-) -> ExitCode {
-    let binary = program.program.binary;
-    let command = command(&program.program);
-    cli::main_of(binary, command, args, |matches| {
-        let usage = |e: clap::Error| CliError::Usage(cli::usage_line(&e));
-        let options = CommonFlags::from_arg_matches(matches).map_err(usage)?;
-        let flags = Flags::from_arg_matches(matches).map_err(usage)?;
-        let report = run(program, &options, &flags)?;
-        if !options.quiet {
-            use std::io::Write;
-            let text = report_text(binary, &report);
-            let _ = std::io::stdout().lock().write_all(text.as_bytes());
-        }
-        Ok(())
-    })
+/// What a path tracer's program does once its arguments are parsed:
+/// render, write and report. A program with flags of its own (chapter 8's
+/// `--objects`) adds them to [`command`], chooses its [`PathProgram`] from
+/// them, and runs this on [`cli::main_of`].
+pub fn run_matches(program: &PathProgram, matches: &clap::ArgMatches) -> Result<(), CliError> {
+    let usage = |e: clap::Error| CliError::Usage(cli::usage_line(&e));
+    let options = CommonFlags::from_arg_matches(matches).map_err(usage)?;
+    let flags = Flags::from_arg_matches(matches).map_err(usage)?;
+    let report = run(program, &options, &flags)?;
+    if !options.quiet {
+        use std::io::Write;
+        let text = report_text(program.program.binary, &report);
+        let _ = std::io::stdout().lock().write_all(text.as_bytes());
+    }
+    Ok(())
 }
 
 // Every term has its file.

@@ -21,7 +21,9 @@
 //! The scene, the sky and the optics in lanes (eight rays against the
 //! ground and every sphere, masks instead of branches) are
 //! `raylab-lanes`', shared with chapter 8. With `--like chNN-…`
-//! ([`raylab_like`]) it traces as any of chapters 1–5.
+//! ([`raylab_like`]) it traces as any of chapters 1–5; with `--objects
+//! tree` ([`Objects`]) every hit is found through chapter 9's tree, eight
+//! rays against each node (`raylab_lanes::BvhX8`).
 
 pub mod camera;
 pub mod ledger;
@@ -36,6 +38,7 @@ pub mod wave;
 use raylab::{Hit, Ray, Step, Surface, Vec3};
 use raylab_cli::Chapter;
 
+pub use ch09_many_spheres::Objects;
 pub use raylab_like::{Features, Like};
 
 /// Chapter 7's step: a Whitted chapter's shading, rendered in waves.
@@ -64,16 +67,27 @@ pub const BINARY: &str = "ch07-eight-rays";
 /// Chapter 7's program, tracing as the chapter `like` does, with its
 /// defaults (chapter 5's when `--like` is not given).
 pub fn chapter(like: Like) -> Chapter<EightRays> {
+    chapter_through(like, Objects::List)
+}
+
+/// Chapter 7's program, its hits found as `objects` says: in the list, or
+/// (`--objects tree`) through chapter 9's tree. The renderer is chosen
+/// here, once for the whole render.
+pub fn chapter_through(like: Like, objects: Objects) -> Chapter<EightRays> {
     let defaults = like.defaults();
     Chapter {
         binary: BINARY,
         about: "Chapter 7, eight rays at a time: chapter 5's image, to the byte, traced in waves of \
                 8-wide SIMD. --like ch01-ray-cast … ch05-antialiasing traces as that chapter does, \
-                with its defaults (default: ch05-antialiasing).",
+                with its defaults (default: ch05-antialiasing); --objects tree finds every hit \
+                through chapter 9's tree of boxes.",
         max_depth: defaults.max_depth,
         spp: defaults.spp,
         probe: defaults.probe,
         step: EightRays { like },
-        render: render::render_waves,
+        render: match objects {
+            Objects::List => render::render_waves,
+            Objects::Tree => render::render_tree_waves,
+        },
     }
 }

@@ -27,7 +27,9 @@
 //!
 //! The scene, the camera, the sky and the optics in lanes are
 //! `raylab-lanes'`, shared with chapter 7. The program is chapter 6's, with
-//! this renderer: the same flags, the same files.
+//! this renderer: the same flags, the same files, and one more,
+//! `--objects tree` ([`Objects`]), which finds every hit through chapter
+//! 9's tree ([`render_tree_paths`]).
 
 pub mod lane_use;
 pub mod paths;
@@ -36,9 +38,14 @@ pub mod starts;
 pub mod terms;
 pub mod window;
 
-use ch06_path_tracing::PathProgram;
+use ch06_path_tracing::{PathProgram, PathRender, PathSettings};
+use ch09_many_spheres::Bvh;
+use raylab::render::Progress;
+use raylab::{Camera, Scene};
 use raylab_cli::Program;
+use raylab_lanes::BvhX8;
 
+pub use ch09_many_spheres::Objects;
 pub use render::{lane_use, render_eight, render_eight_with};
 
 /// Chapter 8's program: chapter 6's, with its defaults, rendered eight
@@ -47,9 +54,37 @@ pub const PROGRAM: PathProgram = PathProgram {
     program: Program {
         binary: "ch08-eight-paths",
         about: "Chapter 8, eight paths at a time: chapter 6's path-traced image, to the byte, \
-                traced in 8-wide SIMD lanes.",
+                traced in 8-wide SIMD lanes. --objects tree finds every hit through chapter 9's \
+                tree of boxes.",
         max_depth: 10,
         spp: 256,
     },
     render: render_eight,
 };
+
+/// Chapter 8's program, its hits found as `objects` says: the renderer
+/// is chosen here, once for the whole render.
+pub fn program_through(objects: Objects) -> PathProgram {
+    PathProgram {
+        render: match objects {
+            Objects::List => render_eight,
+            Objects::Tree => render_tree_paths,
+        },
+        ..PROGRAM
+    }
+}
+
+// ANCHOR: tree
+/// [`render_eight`], with every hit found through chapter 9's tree
+/// (`--objects tree`): the paths' eight at a time ([`BvhX8`]), the
+/// photons' one at a time. The same bytes.
+pub fn render_tree_paths(
+    scene: &Scene,
+    camera: &Camera,
+    settings: &PathSettings,
+    progress: &dyn Progress,
+) -> PathRender {
+    let tree = Bvh::build(scene);
+    render_eight_with(scene, &BvhX8::new(&tree), camera, settings, progress)
+}
+// ANCHOR_END: tree

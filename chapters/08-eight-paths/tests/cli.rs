@@ -51,7 +51,9 @@ fn the_program_names_itself_and_refuses_bad_flags_in_one_line() {
     let help = Command::new(program).arg("--help").output().unwrap();
     let help = String::from_utf8_lossy(&help.stdout);
     assert!(
-        help.contains("ch08-eight-paths") && help.contains("--caustics"),
+        help.contains("ch08-eight-paths")
+            && help.contains("--caustics")
+            && help.contains("--objects"),
         "{help}"
     );
     let out = dir.path().join("out");
@@ -65,4 +67,23 @@ fn the_program_names_itself_and_refuses_bad_flags_in_one_line() {
     assert_eq!(stderr.lines().count(), 1, "{stderr}");
     assert!(stderr.starts_with("ch08-eight-paths: error: "), "{stderr}");
     assert!(!out.exists());
+}
+
+#[test]
+fn with_objects_tree_the_program_writes_the_same_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let program = env!("CARGO_BIN_EXE_ch08-eight-paths");
+    let files = |objects: &str| {
+        let out = dir.path().join(objects);
+        let status = Command::new(program)
+            .args(["--width", "21", "--height", "9", "--spp", "3", "--quiet"])
+            .args(["--objects", objects, "--out"])
+            .arg(&out)
+            .status()
+            .unwrap();
+        assert!(status.success());
+        ["render.png", "render.exr", "variance.exr"]
+            .map(|name| std::fs::read(out.join(name)).unwrap())
+    };
+    assert!(files("list") == files("tree"), "the files differ");
 }

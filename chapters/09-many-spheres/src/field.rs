@@ -40,7 +40,7 @@ pub fn field(n: usize, seed: u64) -> String {
     let epsilon = epsilon_for(half.hypot(eye_y).hypot(eye_z + half));
     let mut text = format!(
         "# A field of {n} random spheres (seed {seed}), written by\n\
-         # `cargo run -p ch09-many-spheres -- --generate-field {n} --seed {seed}`.\n\n\
+         # `cargo run -p ch09-many-spheres -- generate-field {n} --seed {seed}`.\n\n\
          # How far shadow and secondary rays start from their surface: the lab's\n\
          # 1e-4 is below the rounding error of a hit this far from the eye.\n\
          epsilon = {epsilon:.1e}\n\n\
@@ -75,6 +75,14 @@ pub fn field(n: usize, seed: u64) -> String {
     text
 }
 // ANCHOR_END: field
+
+/// A field of `n` spheres (seed 1), as a scene and its camera: the scenes
+/// the tests, the figures and the bench try the tree on.
+pub fn field_scene(n: usize) -> (raylab::Scene, raylab::Camera) {
+    let text = field(n, 1);
+    raylab_cli::scene_file::parse(&text, std::path::Path::new("field.toml"))
+        .expect("a generated field is a valid scene")
+}
 
 /// The smallest radius of a field's spheres.
 const SMALLEST_RADIUS: f32 = 0.15;

@@ -5,7 +5,7 @@
 
 use std::path::Path;
 
-use ch09_many_spheres::figures::speckled;
+use ch09_many_spheres::acne::speckled;
 use ch09_many_spheres::{Like, render_tree};
 use image::RgbImage;
 use raylab::{Keep, NoProgress, Settings};

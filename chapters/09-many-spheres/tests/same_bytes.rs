@@ -2,8 +2,8 @@
 //! 6's, on the lab scene and on a field of spheres.
 
 use ch06_path_tracing::{PathSettings, render_paths, render_paths_with};
-use ch09_many_spheres::figures::field_scene;
-use ch09_many_spheres::{Bvh, Like, ManySpheres, render_tree};
+use ch09_many_spheres::field::field_scene;
+use ch09_many_spheres::{Bvh, Like, render_tree};
 use raylab::{Camera, Keep, NoProgress, Scene, Settings, Step};
 use raylab_cli::{Chapter, Options};
 
@@ -107,8 +107,6 @@ fn chapter_6_through_the_tree_makes_chapter_6s_images() {
 
 #[test]
 fn the_step_is_the_imitated_chapters_own() {
-    let step = ManySpheres {
-        like: Like::AntiAliasing,
-    };
-    assert_eq!(step.lab_five(), ch05_antialiasing::lab_five());
+    let nine = ch09_many_spheres::chapter(Like::AntiAliasing);
+    assert_eq!(nine.step.lab_five(), ch05_antialiasing::lab_five());
 }

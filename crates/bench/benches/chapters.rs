@@ -288,7 +288,7 @@ fn rays_per_pixel(c: &mut Criterion) {
 /// Chapter 9: rays per second against the number of spheres, every
 /// sphere tested against the tree, one ray at a time and eight: chapter 5
 /// (the list), chapter 7 (the list, in waves), chapter 9 (the tree) and
-/// chapter 9 `--eight` (the tree, in chapter 7's waves), in two rounds over every
+/// chapter 7 `--objects tree` (the tree, in waves), in two rounds over every
 /// N, on seeded fields of spheres at chapter 5's settings, 400 × 300, the
 /// tree's build included. Testing every one of 5,000 or 10,000 spheres
 /// takes seconds a render, so the list is timed there at 100 × 75, the same
@@ -298,10 +298,19 @@ fn rays_per_pixel(c: &mut Criterion) {
 /// scene through chapter 9 against chapter 5.
 /// `cargo bench -p raylab-bench -- "many spheres"`
 fn many_spheres(c: &mut Criterion) {
-    use ch09_many_spheres::figures::{chapter5_settings, field_scene};
-    use ch09_many_spheres::{Bvh, ManySpheres, render_tree, render_tree_waves};
-    let step = ManySpheres {
-        like: Like::AntiAliasing,
+    use ch07_eight_rays::render::render_tree_waves;
+    use ch09_many_spheres::field::field_scene;
+    use ch09_many_spheres::{Bvh, render_tree};
+    let step = Like::AntiAliasing;
+    // Chapter 5's settings (depth 10, the lab's five rays) at this size.
+    let chapter5_settings = |width: u32, height: u32| Settings {
+        width,
+        height,
+        max_depth: 10,
+        epsilon: 1e-4,
+        sampling: Sampling::new(5, None, 0)
+            .expect("5 rays per pixel")
+            .with_lab_five(step.lab_five()),
     };
     let eight = ch07_eight_rays::EightRays {
         like: Like::AntiAliasing,
@@ -324,7 +333,7 @@ fn many_spheres(c: &mut Criterion) {
             ("ch05 list", list_settings, false, false),
             ("ch07 list", list_settings, false, true),
             ("ch09 tree", big, true, false),
-            ("ch09 --eight tree", big, true, true),
+            ("ch07 --objects tree", big, true, true),
         ];
         for (name, settings, tree, lanes) in variants {
             let draw = || match (tree, lanes) {

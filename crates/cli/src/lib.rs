@@ -699,7 +699,7 @@ pub fn main<S: Step>(chapter: &Chapter<S>) -> ExitCode {
 }
 
 /// [`main`] with the arguments given (the first is the program's name),
-/// for a program that reads a flag of its own first (chapter 9's `--eight`).
+/// for a test or a program that hands its own arguments.
 pub fn main_with_args<S: Step>(
     chapter: &Chapter<S>,
     args: impl IntoIterator<Item = impl Into<OsString> + Clone>,

@@ -6,9 +6,10 @@
 //! same arithmetic in the same order, so that their images are the core's
 //! to the bit. This crate holds what both need, once: eight vectors side
 //! by side, the camera, the scene, the sky and the optics in lanes, and
-//! the samples' generators eight at a time. It depends on the core; only
-//! the code that traces eight rays at a time depends on it (chapters 7 and
-//! 8, and chapter 9's eight-lane search).
+//! the samples' generators eight at a time, and chapter 9's tree searched
+//! by eight rays at once ([`BvhX8`]). It depends on the core and on
+//! chapter 9's tree, whose search it mirrors; nothing depends on it but
+//! the fast chapters (7 and 8) and what runs them.
 //!
 //! ## The map of mirrors
 //!
@@ -25,7 +26,7 @@
 //! | [`SceneX8::surfaces`], [`SceneX8::hit`], [`SceneX8::hit_of`] | `Scene::hit_record`, `Checker::albedo_at` | `scene::tests` (the same test, and `…the_checker_parity_matches_the_scalar_one_far_out_and_at_nan`) |
 //! | [`SkyX8::radiance`] | `Sky::radiance` | `light::tests::the_sky_of_eight_directions_is_the_scalar_sky_nan_and_minus_zero_included` |
 //! | [`reflect`], [`refract`] | `optics::reflect`, `optics::refract` | `optics::tests::eight_reflections_and_refractions_equal_the_scalar_ones_to_the_bit` |
-//! | [`SceneQueryX8`] (another way to find the hits: chapter 9's tree, `ch09_many_spheres::BvhX8`) | `Scene::nearest_hit`, `Scene::any_hit`, through [`SceneX8::nearest_in_list`], [`SceneX8::any_in_list`] | `chapters/09-many-spheres/tests/tree_matches_list.rs` (random scenes and rays, every lane) |
+//! | [`SceneQueryX8`] for [`BvhX8`] (another way to find the hits: chapter 9's tree, eight rays against each node) | `ch09_many_spheres::Bvh::nearest_hit`, `Bvh::any_hit`, and so the list's [`SceneX8::nearest_in_list`], [`SceneX8::any_in_list`] | `tests/tree_x8_matches_list.rs` (chapter 9's random scenes and rays, every lane) |
 //! | [`SpheresX8`] (one ray, eight spheres) | `Scene::nearest_hit`, `Scene::any_hit` | `spheres::tests` (50,000 random rays, ties, padding) |
 //! | [`Pcg32x8`] (and [`Pcg32x8::uniform_in_lane`], one lane's draw in scalar arithmetic), [`sample_hashes`], [`sample_rngs`] | `sample_rng` and its `Pcg32` | `rng::tests` |
 //! | [`offsets_x8`] | `PixelSamples::offset` (`jittered`, `random`) | `samples::tests::eight_jittered_or_random_points_at_once_are_offset_s_points_to_the_bit` |
@@ -41,6 +42,7 @@
 
 #![warn(missing_docs)]
 
+pub mod bvh_x8;
 pub mod camera;
 pub mod light;
 pub mod optics;
@@ -51,6 +53,7 @@ pub mod shapes;
 pub mod spheres;
 pub mod vec3x8;
 
+pub use bvh_x8::BvhX8;
 pub use camera::CameraX8;
 pub use light::SkyX8;
 pub use optics::{reflect, refract};

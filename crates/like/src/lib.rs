@@ -176,14 +176,31 @@ pub fn main<S: Step>(
     args: impl IntoIterator<Item = impl Into<OsString> + Clone>,
 ) -> ExitCode {
     let fallback = chapter(Like::AntiAliasing);
-    let command = Options::command(&fallback.program()).arg(arg());
-    raylab_cli::main_of(fallback.binary, command, args, |matches| {
-        let mut options =
-            Options::from_arg_matches(matches).map_err(|e| CliError::Usage(usage_line(&e)))?;
-        let common = &mut options.common;
-        let like = chosen(matches, &mut common.max_depth, &mut common.spp);
-        raylab_cli::run_options(&chapter(like), &options)
+    raylab_cli::main_of(fallback.binary, command(&fallback), args, |matches| {
+        run(matches, chapter)
     })
+}
+
+/// The shared command line with `--like`, named after `chapter` and with
+/// its defaults: a program with flags of its own (chapter 7's `--objects`,
+/// chapter 9's `generate-field`) adds them to it and runs on
+/// [`raylab_cli::main_of`] and [`run`].
+pub fn command<S: Step>(chapter: &Chapter<S>) -> clap::Command {
+    Options::command(&chapter.program()).arg(arg())
+}
+
+/// What a program of [`command`] does once its arguments are parsed: the
+/// shared options, with the defaults of the chapter `--like` chose, run
+/// by `chapter(like)`.
+pub fn run<S: Step>(
+    matches: &clap::ArgMatches,
+    chapter: impl Fn(Like) -> Chapter<S>,
+) -> Result<(), CliError> {
+    let mut options =
+        Options::from_arg_matches(matches).map_err(|e| CliError::Usage(usage_line(&e)))?;
+    let common = &mut options.common;
+    let like = chosen(matches, &mut common.max_depth, &mut common.spp);
+    raylab_cli::run_options(&chapter(like), &options)
 }
 
 #[cfg(test)]

@@ -1,14 +1,19 @@
-//! Chapter 9's figures and numbers: a field of 500 spheres rendered by
-//! chapter 9, the tree's boxes over it, the boxes each pixel's ray tested,
-//! rays per second against the number of spheres, and the build time.
+//! Chapter 9's figures and numbers: a field of 500 spheres rendered
+//! through the tree, the tree's boxes over it, the boxes each pixel's ray
+//! tested, rays per second against the number of spheres, and the build
+//! time. What they measure is in [`measure`], how they are drawn in
+//! [`figures`].
+
+pub mod figures;
+pub mod measure;
 
 use std::path::{Path, PathBuf};
 
-use ch09_many_spheres::figures::{
-    SpeedPoint, build_time_figure, measure_build, measure_speed, speed_figure, tree_figure,
-    visits_figure,
-};
+use ch07_eight_rays::{EightRays, Objects};
+use ch09_many_spheres::field::field_scene;
 use ch09_many_spheres::{BINARY, Bvh, Like};
+use figures::{build_time_figure, speed_figure, tree_figure, visits_figure};
+use measure::{SpeedPoint, measure_build, measure_speed};
 use raylab::frame::thousands;
 use raylab_cli::output::{save_png, save_text};
 use raylab_cli::{self as cli, CliError, Options};
@@ -36,8 +41,9 @@ pub fn make_figures(
     size: Size,
     quiet: bool,
 ) -> Result<Vec<PathBuf>, JobError> {
-    // The field as a learner renders it, `--eight` for the main job's
-    // time (the same bytes as without).
+    // The field as a learner renders it with chapter 9, but traced by
+    // chapter 7 through the same tree (`--objects tree`), for the main
+    // job's time: the same bytes.
     let field = scenes.join("field-500.toml");
     let args = [
         BINARY.to_owned(),
@@ -48,7 +54,7 @@ pub fn make_figures(
         // The render alone: its depth sweep would take most of a minute.
         "--no-diagrams".to_owned(),
     ];
-    let chapter = ch09_many_spheres::chapter_eight(Like::AntiAliasing);
+    let chapter = ch07_eight_rays::chapter_through(Like::AntiAliasing, Objects::Tree);
     let mut options =
         Options::parse_for(&chapter, args.clone()).map_err(|e| CliError::Usage(e.to_string()))?;
     options.common.quiet = quiet;
@@ -81,12 +87,12 @@ pub fn make_figures(
         "visits.png",
         &visits_figure(&scene, &camera, size.width / 2, size.height / 2),
     )?;
-    let points = measure_speed(&SPEED_COUNTS, SPEED_SIZE.width, SPEED_SIZE.height);
+    let points = measure_speed(&SPEED_COUNTS, SPEED_SIZE)?;
     save("speed.png", &speed_figure(&points))?;
     let builds = measure_build(&BUILD_COUNTS, 5);
     save("build-time.png", &build_time_figure(&builds))?;
 
-    let (big, _) = ch09_many_spheres::figures::field_scene(10_000);
+    let (big, _) = field_scene(10_000);
     let tree = Bvh::build(&big);
     let text = numbers_text(&points, &builds, &tree, &speed::machine());
     let path = dir.join("numbers.md");
@@ -109,11 +115,13 @@ pub const ACNE_WINDOW: (u32, u32) = (96, 72);
 fn acne_figures(
     dir: &Path,
     args: &[String],
-    chapter: &raylab_cli::Chapter<ch07_eight_rays::EightRays>,
+    chapter: &raylab_cli::Chapter<EightRays>,
     own: &image::RgbImage,
     epsilon: f32,
 ) -> Result<Vec<PathBuf>, JobError> {
-    use ch09_many_spheres::figures::{SPECKLE, acne_figure, densest_window, speckled};
+    use ch09_many_spheres::acne::{SPECKLE, speckled};
+    use figures::acne_figure;
+    use measure::densest_window;
     let lab_epsilon = raylab_cli::DEFAULT_EPSILON;
     let render_at = |folder: &str, epsilon: f32| {
         let mut at = args.to_vec();
@@ -232,7 +240,7 @@ mod tests {
                 tree: 2.0,
             },
         ];
-        let (scene, _) = ch09_many_spheres::figures::field_scene(40);
+        let (scene, _) = field_scene(40);
         let tree = Bvh::build(&scene);
         let text = numbers_text(&points, &[(40, 0.25), (1_000, 1.5)], &tree, "a test CPU");
         assert!(text.contains("| 5 | 10.000 | 5.000 | 0.5 |"), "{text}");

@@ -1,11 +1,12 @@
-//! The tree for eight rays at a time: chapter 7's waves and chapter 8's
-//! paths find their hits through it, to the same bytes as testing every
-//! sphere.
+//! Chapter 9's tree for eight rays at a time: chapter 7's waves and
+//! chapter 8's paths find their hits through it (`--objects tree`), to the
+//! same bytes as testing every sphere.
 //!
 //! This is the faster floor beside [`Bvh`]'s search, which a learner reads
-//! first: the same tree, the same widened boxes, the same tie rule, with
-//! eight rays in the lanes of an `f32x8`, as `raylab-lanes`' `SceneX8`
-//! holds them.
+//! first in chapter 9: the same tree, the same widened boxes, the same tie
+//! rule, with eight rays in the lanes of an `f32x8`, as [`SceneX8`] holds
+//! them. It mirrors `Bvh::nearest_hit` and `Bvh::any_hit` as `SceneX8`
+//! mirrors the list's.
 //!
 //! Two shapes of search would suit eight lanes. *One ray against several
 //! boxes* needs a tree with eight children per node, and takes the rays
@@ -20,12 +21,14 @@
 //! bounces) visit the union of what each needs: still right, less of a
 //! gain.
 
+use ch09_many_spheres::bvh::{Bvh, COORDINATE_SLACK, DISTANCE_SLACK, MAX_DEPTH, Node};
 use raylab::scene::{Hit, SceneQuery};
 use raylab::{Ray, Vec3};
-use raylab_lanes::{GROUND, Hits, NOTHING, SceneQueryX8, Vec3x8, plane_hits, sphere_hits};
 use wide::{CmpEq, CmpLe, CmpLt, f32x8};
 
-use crate::bvh::{Bvh, COORDINATE_SLACK, DISTANCE_SLACK, MAX_DEPTH, Node};
+#[cfg(doc)]
+use crate::SceneX8;
+use crate::{GROUND, Hits, NOTHING, SceneQueryX8, Vec3x8, plane_hits, sphere_hits};
 
 /// [`Bvh`] searched by eight rays at a time.
 #[derive(Clone, Debug)]
