@@ -13,7 +13,7 @@ use ch07_eight_rays::{EightRays, Objects};
 use ch09_many_spheres::field::field_scene;
 use ch09_many_spheres::{BINARY, Bvh, Like};
 use figures::{build_time_figure, speed_figure, tree_figure, visits_figure};
-use measure::{SpeedPoint, measure_build, measure_speed};
+use measure::{LIST_FULL_SIZE_UP_TO, SpeedPoint, measure_build, measure_speed};
 use raylab::frame::thousands;
 use raylab_cli::output::{save_png, save_text};
 use raylab_cli::{self as cli, CliError, Options};
@@ -185,14 +185,16 @@ pub fn numbers_text(
     machine: &str,
 ) -> String {
     let mut text = String::from(
-        "| spheres | every sphere tested (Mrays/s) | the tree (Mrays/s) | tree ÷ list |\n\
-         |---:|---:|---:|---:|\n",
+        "| spheres | every sphere tested (Mrays/s) | its image | the tree (Mrays/s) | tree ÷ list |\n\
+         |---:|---:|---:|---:|---:|\n",
     );
     for p in points {
         text.push_str(&format!(
-            "| {} | {:.3} | {:.3} | {:.1} |\n",
+            "| {} | {:.3} | {}×{} | {:.3} | {:.1} |\n",
             thousands(p.spheres as u64),
             p.list,
+            p.list_size.width,
+            p.list_size.height,
             p.tree,
             p.tree / p.list
         ));
@@ -206,8 +208,9 @@ pub fn numbers_text(
     };
     text.push_str(&format!(
         "\nThe fastest of up to five renders of each (one where a render takes a third of a \
-         second or more; the tree's build included) at chapter 5's settings, {}×{}, \
-         on {machine}. The tree over {} spheres took {} to build on one core \
+         second or more; the tree's build included) at chapter 5's settings, {}×{}; the list \
+         past {LIST_FULL_SIZE_UP_TO} spheres on a smaller image of the same view, with about \
+         as many ray–sphere tests as at {LIST_FULL_SIZE_UP_TO}, on {machine}. The tree over {} spheres took {} to build on one core \
          ({} for 1,000; the best of five), and keeps {} nodes, {:.1} bytes per sphere, {} \
          levels deep.\n",
         SPEED_SIZE.width,
@@ -232,20 +235,25 @@ mod tests {
             SpeedPoint {
                 spheres: 5,
                 list: 10.0,
+                list_size: SPEED_SIZE,
                 tree: 5.0,
             },
             SpeedPoint {
                 spheres: 10_000,
                 list: 0.01,
+                list_size: measure::list_size(SPEED_SIZE, 10_000),
                 tree: 2.0,
             },
         ];
         let (scene, _) = field_scene(40);
         let tree = Bvh::build(&scene);
         let text = numbers_text(&points, &[(40, 0.25), (1_000, 1.5)], &tree, "a test CPU");
-        assert!(text.contains("| 5 | 10.000 | 5.000 | 0.5 |"), "{text}");
         assert!(
-            text.contains("| 10,000 | 0.010 | 2.000 | 200.0 |"),
+            text.contains("| 5 | 10.000 | 120×90 | 5.000 | 0.5 |"),
+            "{text}"
+        );
+        assert!(
+            text.contains("| 10,000 | 0.010 | 27×20 | 2.000 | 200.0 |"),
             "{text}"
         );
         assert!(text.contains("40 spheres took 0.25 ms"), "{text}");

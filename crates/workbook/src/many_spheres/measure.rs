@@ -19,16 +19,38 @@ pub struct SpeedPoint {
     pub spheres: usize,
     /// Millions of rays per second, every sphere tested.
     pub list: f64,
+    /// The image the list was timed on: the figure's own, or for a large
+    /// field a smaller one of the same view ([`list_size`]).
+    pub list_size: Size,
     /// Millions of rays per second through the tree (its build included).
     pub tree: f64,
 }
 
+/// The largest field the list is timed on at the figure's full size.
+pub const LIST_FULL_SIZE_UP_TO: usize = 500;
+
+/// The image the list is timed on for a field of `spheres`: the same view
+/// with fewer pixels, about `LIST_FULL_SIZE_UP_TO / spheres` as many, so
+/// that every field past 500 costs the list about as many ray–sphere tests
+/// as the field of 500 does. A rate is rays over time, and the view is the
+/// same, so the smaller image measures the same rate; at full size the
+/// fields of 5,000 and 10,000 spheres were most of the main job's time.
+pub fn list_size(size: Size, spheres: usize) -> Size {
+    let scale = (LIST_FULL_SIZE_UP_TO as f64 / spheres.max(1) as f64)
+        .min(1.0)
+        .sqrt();
+    let shrink = |pixels: u32| ((f64::from(pixels) * scale).round() as u32).clamp(1, pixels);
+    Size {
+        width: shrink(size.width),
+        height: shrink(size.height),
+    }
+}
+
 /// Render a field of each of `counts` spheres at chapter 5's settings
-/// (its defaults at this `size`),
-/// through the list and through the tree, and time each (the fastest of a
-/// few renders where one is quick). The list at
-/// 10,000 spheres is slow: about a minute at 400 × 300 on two cores, so
-/// figures use a smaller image.
+/// (its defaults at this `size`), through the list and through the tree,
+/// and time each (the fastest of a few renders where one is quick). The
+/// list is timed on [`list_size`]'s image, where the tree is rendered
+/// again to check that it gives the list's image.
 pub fn measure_speed(counts: &[usize], size: Size) -> Result<Vec<SpeedPoint>, CliError> {
     let settings = settings_of(&ch05_antialiasing::CHAPTER, size)?;
     let step = Like::AntiAliasing;
@@ -36,22 +58,34 @@ pub fn measure_speed(counts: &[usize], size: Size) -> Result<Vec<SpeedPoint>, Cl
         linear: false,
         maps: false,
     };
-    Ok(counts
+    counts
         .iter()
         .map(|&n| {
             let (scene, camera) = field_scene(n);
-            let list =
-                fastest(|| raylab::render(&scene, &camera, &step, &settings, keep, &NoProgress));
+            let small = list_size(size, n);
+            let list_settings = settings_of(&ch05_antialiasing::CHAPTER, small)?;
+            let list = fastest(|| {
+                raylab::render(&scene, &camera, &step, &list_settings, keep, &NoProgress)
+            });
             let tree =
                 fastest(|| render_tree(&scene, &camera, &step, &settings, keep, &NoProgress));
-            assert_eq!(list.srgb, tree.srgb, "the tree must give the list's image");
-            SpeedPoint {
+            let same_size_tree = if small == size {
+                tree.srgb.clone()
+            } else {
+                render_tree(&scene, &camera, &step, &list_settings, keep, &NoProgress).srgb
+            };
+            assert_eq!(
+                list.srgb, same_size_tree,
+                "the tree must give the list's image"
+            );
+            Ok(SpeedPoint {
                 spheres: n,
                 list: list.mrays_per_second(),
+                list_size: small,
                 tree: tree.mrays_per_second(),
-            }
+            })
         })
-        .collect())
+        .collect()
 }
 
 /// The fastest of up to five renders, made again while they took under a
@@ -134,5 +168,47 @@ mod tests {
             mask[(y * width + x) as usize] = true;
         }
         assert_eq!(densest_window(&mask, width, 16, 16), ((40, 24), 3));
+    }
+
+    const FIGURE: Size = Size {
+        width: 120,
+        height: 90,
+    };
+
+    #[test]
+    fn fields_up_to_500_spheres_time_the_list_at_the_figures_full_size() {
+        assert_eq!(list_size(FIGURE, 5), FIGURE);
+        assert_eq!(list_size(FIGURE, 500), FIGURE);
+    }
+
+    #[test]
+    fn a_field_of_10000_spheres_times_the_list_on_a_twentieth_of_the_pixels() {
+        // √(500/10,000) = 0.2236: 120 × 0.2236 = 26.8, 90 × 0.2236 = 20.1.
+        assert_eq!(
+            list_size(FIGURE, 10_000),
+            Size {
+                width: 27,
+                height: 20
+            }
+        );
+        // √(500/5,000) = 0.3162: 37.9 and 28.5.
+        assert_eq!(
+            list_size(FIGURE, 5_000),
+            Size {
+                width: 38,
+                height: 28
+            }
+        );
+    }
+
+    #[test]
+    fn a_huge_field_still_times_the_list_on_at_least_one_pixel() {
+        assert_eq!(
+            list_size(FIGURE, usize::MAX),
+            Size {
+                width: 1,
+                height: 1
+            }
+        );
     }
 }
