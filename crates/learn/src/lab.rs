@@ -56,6 +56,15 @@ pub enum LabError {
     Manifest { path: PathBuf, what: String },
 }
 
+/// The workspace's root: the folder at or above `here` that holds
+/// `crates/learn/Cargo.toml` and `chapters/`, so that the lab is the
+/// learner's checkout wherever in it they are.
+pub fn workspace_root(here: &Path) -> Option<PathBuf> {
+    here.ancestors()
+        .find(|dir| dir.join("crates/learn/Cargo.toml").is_file() && dir.join("chapters").is_dir())
+        .map(Path::to_owned)
+}
+
 /// What `start` did with each file of the exercise.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Started {
@@ -231,11 +240,8 @@ impl Lab {
                 text.push_str(&format!("{name} = {}\n", self.resolve(exercise, spec)));
             }
         }
-        text.push_str(
-            "\n[workspace]\n\n\
-             [profile.dev]\nopt-level = 1\n\n\
-             [profile.dev.package.\"*\"]\nopt-level = 3\ndebug = false\n",
-        );
+        text.push_str("\n[workspace]\n\n");
+        text.push_str(&dev_profile(&root, "opt-level = 1\n"));
         Ok(text)
     }
 
@@ -328,6 +334,34 @@ impl Lab {
         );
         write_atomically(&self.progress_path(), &text)
     }
+}
+
+/// A lab's `[profile.dev]`: `own` for its own crates (the learner's), and
+/// the workspace's settings for every other package, copied from its
+/// `Cargo.toml` (`root`): the libraries the workspace has compiled are then
+/// the very builds the lab needs, never compiled a second time with other
+/// settings.
+pub(crate) fn dev_profile(root: &toml::Table, own: &str) -> String {
+    let mut text = format!("[profile.dev]\n{own}\n");
+    let packages = root
+        .get("profile")
+        .and_then(|p| p.get("dev"))
+        .and_then(|d| d.get("package"))
+        .and_then(|p| p.as_table());
+    for (name, settings) in packages.into_iter().flatten() {
+        let Some(settings) = settings.as_table() else {
+            continue;
+        };
+        text.push_str(&format!(
+            "[profile.dev.package.{}]\n",
+            toml::Value::String(name.clone())
+        ));
+        for (key, value) in settings {
+            text.push_str(&format!("{key} = {value}\n"));
+        }
+        text.push('\n');
+    }
+    text
 }
 
 /// A dependency's spec as one inline TOML value, its `path` (if it has
