@@ -100,12 +100,16 @@ fn check_core_steps(
         "raylab/src/".to_owned(),
         format!("{}/", shown(&lab.core_src(), &here)),
     )];
-    // The tests first: when they fail, nothing else needs building.
-    // Most of a first check: the core, compiled for its tests, on top of
-    // the libraries learn's own build compiled already.
-    let note = "compiling the core with your code for its tests, the first time: about a \
-                minute on a quiet 2-core machine, two or three when it is busy; later checks \
-                recompile only what you change …";
+    // The tests first: when they fail, nothing else needs building, and
+    // a failing check after an edit recompiles the core alone. The first
+    // time, on top of the libraries the checker's build compiled, this
+    // compiles the core twice (the library and its tests) and about ten
+    // libraries again: `-p raylab` chooses their features for the core
+    // alone, not as the command line does. Building the chapter here too
+    // would share them, but would recompile the command line and the
+    // chapter before every failing check's tests, seconds each time.
+    let note = "compiling the core with your code for its tests, the first time: about half \
+                a minute; later checks recompile only what you change …";
     let built = match noted_build(lab, "core-tests", note, out, |out| {
         cargo_build(
             &manifest,

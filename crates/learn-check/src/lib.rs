@@ -12,8 +12,8 @@
 //! shader by [`shader_check`]; [`watch`] checks again on every save.
 //!
 //! Why a program of its own: the reference renders need the core and
-//! chapters 1 to 6, the command line and the image library, about a
-//! hundred crates, none of which `list`, `start`, `hint` or `mistakes`
+//! chapters 1 to 6, the command line and the image library, about 120
+//! crates, none of which `list`, `start`, `hint` or `mistakes`
 //! need. In `learn` itself they were compiled before the learner saw the
 //! list of exercises; here they are compiled once, when the first check
 //! needs them, after a note that says what and how long.

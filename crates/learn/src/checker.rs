@@ -5,13 +5,24 @@
 //! Why: a check needs the tracer itself. It renders the reference
 //! chapters, reads and writes images and watches files, so the checker
 //! links the core, chapters 1 to 6, the command line and the image
-//! library, about a hundred crates. `list`, `start`, `hint` and `mistakes`
-//! need none of them: kept out of `learn`, they compile in seconds on a
-//! fresh clone and the learner sees the exercises at once, and the long
-//! build comes when there is something to check, after a note that says
-//! what it compiles and about how long it takes. Chapter 10's shader check
-//! goes one step further the same way: the checker builds the workspace's
-//! `ch10-gpu` program, and the GPU stack under it, only for `check shader`.
+//! library, about 120 crates. `list`, `start`, `hint` and `mistakes`
+//! need none of them: kept out of `learn`, it compiles in about half a
+//! minute on a fresh clone and the learner sees the exercises at once, and
+//! the long build comes when there is something to check, after a note
+//! that says what it compiles and about how long it takes. Chapter 10's
+//! shader check goes one step further the same way: the checker builds
+//! the workspace's `ch10-gpu` program, and the GPU stack under it, only
+//! for `check shader`.
+//!
+//! A package of its own rather than an optional feature of `learn`: the
+//! learner's command stays `cargo run -p learn -- check NAME` (a feature
+//! would have to be typed, or turned on by `learn` calling cargo again,
+//! which compiles `learn` a second time with it), and the checker's code
+//! is always compiled and tested (`cargo build`, `cargo test` and learn's
+//! own author checks use it as a library), never a configuration nobody
+//! builds. `learn` runs it in its own place (`exec` on Unix), so the
+//! checker's output, its Ctrl-C (`watch`) and its exit code (0 passed, 1
+//! not yet, 2 could not check) are the learner's command's.
 
 use std::io::Write;
 use std::path::PathBuf;
@@ -25,10 +36,10 @@ use crate::run::cargo;
 pub const PACKAGE: &str = "learn-check";
 
 /// What `learn` says before it builds the checker for the first time.
-pub const BUILD_NOTE: &str = "building the checker, once: the core, chapters 1 to 6 (the \
-     reference pictures), the command line and the image library, about 120 crates, then your \
-     exercise on top of them; about three minutes of compiling on a 2-core machine, longer when \
-     it is busy. Later checks take seconds …";
+pub const BUILD_NOTE: &str = "building the checker, once: the core, chapters 1 to 6 (they \
+     draw the reference pictures), the command line and the image library, about 120 crates; \
+     about a minute and a half of compiling on a quiet 2-core machine, two or three when it is \
+     busy. Later checks start in a fraction of a second …";
 
 /// Where the checker's program is once built: the lab's target folder,
 /// as `cargo run` builds it.

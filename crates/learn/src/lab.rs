@@ -473,3 +473,32 @@ pub(crate) fn rust_files(dir: &Path, under: &Path) -> Result<Vec<PathBuf>, LabEr
     }
     Ok(files)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_labs_profile_keeps_its_own_level_and_the_workspaces_settings_for_every_library() {
+        let root: toml::Table = "[profile.dev]\nopt-level = 1\n\n\
+             [profile.dev.package.\"*\"]\nopt-level = 3\ndebug = false\n\n\
+             [profile.dev.package]\nsyn = { opt-level = 0 }\n"
+            .parse()
+            .unwrap();
+        let text = dev_profile(&root, "opt-level = 0\n");
+        let lab: toml::Table = text.parse().unwrap();
+        let dev = &lab["profile"]["dev"];
+        assert_eq!(dev["opt-level"].as_integer(), Some(0), "{text}");
+        assert_eq!(dev["package"]["*"]["opt-level"].as_integer(), Some(3));
+        assert_eq!(dev["package"]["*"]["debug"].as_bool(), Some(false));
+        assert_eq!(dev["package"]["syn"]["opt-level"].as_integer(), Some(0));
+    }
+
+    #[test]
+    fn the_workspace_root_is_found_from_any_folder_inside_it() {
+        let here = Path::new(env!("CARGO_MANIFEST_DIR"));
+        let root = workspace_root(&here.join("src")).unwrap();
+        assert!(root.join("chapters").is_dir() && root.join("crates/learn").is_dir());
+        assert_eq!(workspace_root(Path::new("/")), None);
+    }
+}
