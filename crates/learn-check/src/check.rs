@@ -11,6 +11,8 @@ use std::io::Write;
 use learn::exercise::Exercise;
 use learn::lab::Lab;
 pub use learn::limits::Limits;
+use learn::limits::{HEIGHT, WIDTH};
+use learn::run::shown;
 
 use crate::build::build;
 use crate::compare::Comparison;
@@ -18,8 +20,6 @@ use crate::diagnose::after_failure;
 use crate::noisy::NoiseAgreement;
 use crate::picture::{Picture, render_and_compare, render_and_judge};
 use crate::test_run::run_tests;
-use learn::limits::{HEIGHT, WIDTH};
-use learn::run::shown;
 
 /// Where the check stopped.
 #[derive(Clone, Debug, PartialEq)]
