@@ -336,11 +336,29 @@ impl Lab {
     }
 }
 
+/// The packages whose build settings a lab copies from the workspace's
+/// `[profile.dev.package]`: every library (`*`), and the procedural macros
+/// and their parser, which every lab's graph holds (through the command
+/// line). Not the whole table: cargo warns about each entry that names a
+/// package the lab does not have (the GPU stack, the book's builder), and
+/// those warnings would stand above a learner's compile errors.
+pub const LAB_PROFILE: [&str; 9] = [
+    "*",
+    "syn",
+    "proc-macro2",
+    "quote",
+    "serde_derive",
+    "clap_derive",
+    "thiserror-impl",
+    "zerocopy-derive",
+    "paste",
+];
+
 /// A lab's `[profile.dev]`: `own` for its own crates (the learner's), and
-/// the workspace's settings for every other package, copied from its
-/// `Cargo.toml` (`root`): the libraries the workspace has compiled are then
-/// the very builds the lab needs, never compiled a second time with other
-/// settings.
+/// the workspace's settings for the libraries under them ([`LAB_PROFILE`]),
+/// copied from its `Cargo.toml` (`root`): the libraries the workspace has
+/// compiled are then the very builds the lab needs, never compiled a second
+/// time with other settings.
 pub(crate) fn dev_profile(root: &toml::Table, own: &str) -> String {
     let mut text = format!("[profile.dev]\n{own}\n");
     let packages = root
@@ -352,6 +370,9 @@ pub(crate) fn dev_profile(root: &toml::Table, own: &str) -> String {
         let Some(settings) = settings.as_table() else {
             continue;
         };
+        if !LAB_PROFILE.contains(&name.as_str()) {
+            continue;
+        }
         text.push_str(&format!(
             "[profile.dev.package.{}]\n",
             toml::Value::String(name.clone())
@@ -482,7 +503,7 @@ mod tests {
     fn a_labs_profile_keeps_its_own_level_and_the_workspaces_settings_for_every_library() {
         let root: toml::Table = "[profile.dev]\nopt-level = 1\n\n\
              [profile.dev.package.\"*\"]\nopt-level = 3\ndebug = false\n\n\
-             [profile.dev.package]\nsyn = { opt-level = 0 }\n"
+             [profile.dev.package]\nsyn = { opt-level = 0 }\nwgpu = { opt-level = 0 }\n"
             .parse()
             .unwrap();
         let text = dev_profile(&root, "opt-level = 0\n");
@@ -492,6 +513,21 @@ mod tests {
         assert_eq!(dev["package"]["*"]["opt-level"].as_integer(), Some(3));
         assert_eq!(dev["package"]["*"]["debug"].as_bool(), Some(false));
         assert_eq!(dev["package"]["syn"]["opt-level"].as_integer(), Some(0));
+        assert!(
+            dev["package"].get("wgpu").is_none(),
+            "no lab has the GPU stack"
+        );
+    }
+
+    #[test]
+    fn every_package_a_lab_takes_the_settings_of_is_in_the_workspaces_profile() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../Cargo.toml");
+        let root = parse_toml(&root).unwrap();
+        let lab: toml::Table = dev_profile(&root, "").parse().unwrap();
+        let copied = lab["profile"]["dev"]["package"].as_table().unwrap();
+        for name in LAB_PROFILE {
+            assert!(copied.contains_key(name), "{name}");
+        }
     }
 
     #[test]
