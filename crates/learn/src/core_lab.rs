@@ -211,10 +211,10 @@ impl Lab {
             PathBuf::from("Cargo.toml"),
             format!(
                 "{header}[workspace]\nresolver = \"3\"\nmembers = [{}]\n\n\
-                 # Quick to compile after an edit; the libraries under it optimised.\n\
-                 [profile.dev]\nopt-level = 0\ndebug = false\n\n\
-                 [profile.dev.package.\"*\"]\nopt-level = 3\ndebug = false\n",
-                members.join(", ")
+                 # Quick to compile after an edit; the libraries under it as the\n\
+                 # workspace builds them.\n{}",
+                members.join(", "),
+                crate::lab::dev_profile(&root, "opt-level = 0\ndebug = false\n"),
             ),
         ));
         Ok(manifests)

@@ -56,6 +56,15 @@ pub enum LabError {
     Manifest { path: PathBuf, what: String },
 }
 
+/// The workspace's root: the folder at or above `here` that holds
+/// `crates/learn/Cargo.toml` and `chapters/`, so that the lab is the
+/// learner's checkout wherever in it they are.
+pub fn workspace_root(here: &Path) -> Option<PathBuf> {
+    here.ancestors()
+        .find(|dir| dir.join("crates/learn/Cargo.toml").is_file() && dir.join("chapters").is_dir())
+        .map(Path::to_owned)
+}
+
 /// What `start` did with each file of the exercise.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Started {
@@ -231,11 +240,8 @@ impl Lab {
                 text.push_str(&format!("{name} = {}\n", self.resolve(exercise, spec)));
             }
         }
-        text.push_str(
-            "\n[workspace]\n\n\
-             [profile.dev]\nopt-level = 1\n\n\
-             [profile.dev.package.\"*\"]\nopt-level = 3\ndebug = false\n",
-        );
+        text.push_str("\n[workspace]\n\n");
+        text.push_str(&dev_profile(&root, "opt-level = 1\n"));
         Ok(text)
     }
 
@@ -328,6 +334,55 @@ impl Lab {
         );
         write_atomically(&self.progress_path(), &text)
     }
+}
+
+/// The packages whose build settings a lab copies from the workspace's
+/// `[profile.dev.package]`: every library (`*`), and the procedural macros
+/// and their parser, which every lab's graph holds (through the command
+/// line). Not the whole table: cargo warns about each entry that names a
+/// package the lab does not have (the GPU stack, the book's builder), and
+/// those warnings would stand above a learner's compile errors.
+pub const LAB_PROFILE: [&str; 9] = [
+    "*",
+    "syn",
+    "proc-macro2",
+    "quote",
+    "serde_derive",
+    "clap_derive",
+    "thiserror-impl",
+    "zerocopy-derive",
+    "paste",
+];
+
+/// A lab's `[profile.dev]`: `own` for its own crates (the learner's), and
+/// the workspace's settings for the libraries under them ([`LAB_PROFILE`]),
+/// copied from its `Cargo.toml` (`root`): the libraries the workspace has
+/// compiled are then the very builds the lab needs, never compiled a second
+/// time with other settings.
+pub(crate) fn dev_profile(root: &toml::Table, own: &str) -> String {
+    let mut text = format!("[profile.dev]\n{own}\n");
+    let packages = root
+        .get("profile")
+        .and_then(|p| p.get("dev"))
+        .and_then(|d| d.get("package"))
+        .and_then(|p| p.as_table());
+    for (name, settings) in packages.into_iter().flatten() {
+        let Some(settings) = settings.as_table() else {
+            continue;
+        };
+        if !LAB_PROFILE.contains(&name.as_str()) {
+            continue;
+        }
+        text.push_str(&format!(
+            "[profile.dev.package.{}]\n",
+            toml::Value::String(name.clone())
+        ));
+        for (key, value) in settings {
+            text.push_str(&format!("{key} = {value}\n"));
+        }
+        text.push('\n');
+    }
+    text
 }
 
 /// A dependency's spec as one inline TOML value, its `path` (if it has
@@ -438,4 +493,48 @@ pub(crate) fn rust_files(dir: &Path, under: &Path) -> Result<Vec<PathBuf>, LabEr
         }
     }
     Ok(files)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_labs_profile_keeps_its_own_level_and_the_workspaces_settings_for_every_library() {
+        let root: toml::Table = "[profile.dev]\nopt-level = 1\n\n\
+             [profile.dev.package.\"*\"]\nopt-level = 3\ndebug = false\n\n\
+             [profile.dev.package]\nsyn = { opt-level = 0 }\nwgpu = { opt-level = 0 }\n"
+            .parse()
+            .unwrap();
+        let text = dev_profile(&root, "opt-level = 0\n");
+        let lab: toml::Table = text.parse().unwrap();
+        let dev = &lab["profile"]["dev"];
+        assert_eq!(dev["opt-level"].as_integer(), Some(0), "{text}");
+        assert_eq!(dev["package"]["*"]["opt-level"].as_integer(), Some(3));
+        assert_eq!(dev["package"]["*"]["debug"].as_bool(), Some(false));
+        assert_eq!(dev["package"]["syn"]["opt-level"].as_integer(), Some(0));
+        assert!(
+            dev["package"].get("wgpu").is_none(),
+            "no lab has the GPU stack"
+        );
+    }
+
+    #[test]
+    fn every_package_a_lab_takes_the_settings_of_is_in_the_workspaces_profile() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../Cargo.toml");
+        let root = parse_toml(&root).unwrap();
+        let lab: toml::Table = dev_profile(&root, "").parse().unwrap();
+        let copied = lab["profile"]["dev"]["package"].as_table().unwrap();
+        for name in LAB_PROFILE {
+            assert!(copied.contains_key(name), "{name}");
+        }
+    }
+
+    #[test]
+    fn the_workspace_root_is_found_from_any_folder_inside_it() {
+        let here = Path::new(env!("CARGO_MANIFEST_DIR"));
+        let root = workspace_root(&here.join("src")).unwrap();
+        assert!(root.join("chapters").is_dir() && root.join("crates/learn").is_dir());
+        assert_eq!(workspace_root(Path::new("/")), None);
+    }
 }

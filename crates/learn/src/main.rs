@@ -2,17 +2,16 @@
 //! workspace's root: write the core and each chapter's step yourself.
 
 use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
-use learn::check::{Limits, RENDER_TIME_LIMIT, TEST_TIME_LIMIT, check, check_core};
 use learn::exercise::blank;
-use learn::lab::Lab;
+use learn::lab::{Lab, workspace_root};
+use learn::limits::{HEIGHT, RENDER_TIME_LIMIT, TEST_TIME_LIMIT, WIDTH};
 use learn::path::{self, Item};
 use learn::shader;
-use learn::shader_check::check_shader;
 
 /// Do the lab yourself: write the tracer's core and each chapter's step,
 /// each checked by its tests and against the reference image.
@@ -64,20 +63,17 @@ fn find(name: &str) -> Result<Item, ExitCode> {
     })
 }
 
-/// The workspace's root: the folder above `crates/learn/`, found from the
-/// current folder so that the lab is the learner's checkout.
-fn workspace_root() -> Result<PathBuf, ExitCode> {
+/// The workspace's root, found from the current folder so that the lab is
+/// the learner's checkout.
+fn root() -> Result<PathBuf, ExitCode> {
     let here = std::env::current_dir().map_err(|e| usage(format!("no current folder: {e}")))?;
-    here.ancestors()
-        .find(|dir| dir.join("crates/learn/Cargo.toml").is_file() && dir.join("chapters").is_dir())
-        .map(Path::to_owned)
-        .ok_or_else(|| {
-            usage("run it inside the raylab workspace: `cargo run -p learn -- list`".into())
-        })
+    workspace_root(&here).ok_or_else(|| {
+        usage("run it inside the raylab workspace: `cargo run -p learn -- list`".into())
+    })
 }
 
 fn run(cli: Cli) -> Result<ExitCode, ExitCode> {
-    let lab = Lab::in_workspace(&workspace_root()?);
+    let lab = Lab::in_workspace(&root()?);
     let stdout = std::io::stdout();
     let mut out = stdout.lock();
     match cli.command {
@@ -93,18 +89,14 @@ fn run(cli: Cli) -> Result<ExitCode, ExitCode> {
                 "no exercise `{exercise}` in my-lab/: make it with `cargo run -p learn -- start {exercise}`"
             )))
         }
+        // The checker is a program of its own, built on first use.
         Command::Check { exercise } => {
-            let verdict = match find(&exercise)? {
-                Item::Core(core) => check_core(&lab, core, Limits::DEFAULT, &mut out),
-                Item::Chapter(chapter) => check(&lab, chapter, &mut out),
-                Item::Shader => check_shader(&lab, Limits::DEFAULT, &mut out),
-            };
-            Ok(exit_for(&verdict))
+            let item = find(&exercise)?;
+            learn::checker::run(&lab, "check", &item.name(), &mut out).map_err(usage)
         }
         Command::Watch { exercise } => {
             let item = find(&exercise)?;
-            learn::watch::watch(&lab, item, &mut out).map_err(|_| ExitCode::from(2))?;
-            Ok(ExitCode::SUCCESS)
+            learn::checker::run(&lab, "watch", &item.name(), &mut out).map_err(usage)
         }
         Command::Hint { exercise, level } => {
             let item = find(&exercise)?;
@@ -133,7 +125,7 @@ fn run(cli: Cli) -> Result<ExitCode, ExitCode> {
             } else if item == Item::Shader {
                 let _ = writeln!(
                     out,
-                    "The check asks naga whether the shader compiles, then renders it 160×120 \
+                    "The check asks naga whether the shader compiles, then renders it {WIDTH}×{HEIGHT} \
                      like chapters 2, 3 and 4 (each stopped after {} s; it needs a GPU adapter, \
                      lavapipe will do) and compares each with the chapter's own render. The \
                      book: {page}",
@@ -143,7 +135,7 @@ fn run(cli: Cli) -> Result<ExitCode, ExitCode> {
                 let _ = writeln!(
                     out,
                     "The check runs the exercise's tests (stopped after {} s) and renders \
-                     160×120 (stopped after {} s). The book: {page}",
+                     {WIDTH}×{HEIGHT} (stopped after {} s). The book: {page}",
                     TEST_TIME_LIMIT.as_secs(),
                     RENDER_TIME_LIMIT.as_secs(),
                 );
@@ -333,16 +325,6 @@ fn start(lab: &Lab, item: Item, out: &mut dyn Write) -> Result<(), ExitCode> {
         "then: cargo run -p learn -- check {name}   (or `watch {name}` to check on every save)"
     );
     Ok(())
-}
-
-/// 0 for a pass, 1 for work still to do, 2 for a check that could not run.
-fn exit_for(verdict: &learn::check::Verdict) -> ExitCode {
-    use learn::check::Verdict;
-    match verdict {
-        Verdict::Passed => ExitCode::SUCCESS,
-        Verdict::NoExercise | Verdict::Broken(_) => ExitCode::from(2),
-        _ => ExitCode::from(1),
-    }
 }
 
 /// A clap error as one line: its message with the lines clap puts under it

@@ -2,7 +2,7 @@
 //! reading what they say.
 
 use std::io::Read;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, ExitStatus, Stdio};
 use std::time::{Duration, Instant};
 
@@ -69,43 +69,6 @@ fn reader(pipe: Option<impl Read + Send + 'static>) -> std::thread::JoinHandle<S
 /// The cargo that runs us (`cargo run` says which), or the one on `PATH`.
 pub fn cargo() -> Command {
     Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()))
-}
-
-/// The programs one build of an exercise made.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Built {
-    /// The chapter's program, `chNN-…`.
-    pub program: Option<PathBuf>,
-    /// The test harness of its library: the step's tests.
-    pub tests: Option<PathBuf>,
-}
-
-/// Read cargo's `--message-format=json` lines for the executables made.
-pub fn built_from_messages(stdout: &str) -> Built {
-    let mut built = Built::default();
-    for line in stdout.lines() {
-        let Ok(message) = serde_json::from_str::<serde_json::Value>(line) else {
-            continue;
-        };
-        if message["reason"] != "compiler-artifact" {
-            continue;
-        }
-        let Some(executable) = message["executable"].as_str() else {
-            continue;
-        };
-        let kinds = message["target"]["kind"]
-            .as_array()
-            .cloned()
-            .unwrap_or_default();
-        let is = |kind: &str| kinds.iter().any(|k| k == kind);
-        let test = message["profile"]["test"].as_bool() == Some(true);
-        if is("lib") && test {
-            built.tests = Some(PathBuf::from(executable));
-        } else if is("bin") && !test {
-            built.program = Some(PathBuf::from(executable));
-        }
-    }
-    built
 }
 
 /// One test of the step, as the harness reported it.

@@ -14,9 +14,10 @@ use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 use std::time::Duration;
 
-use learn::check::{Limits, Verdict, check_core};
 use learn::core::{CORE_EXERCISES, CoreExercise};
 use learn::lab::Lab;
+use learn_check::check::{Limits, Verdict};
+use learn_check::core_check::check_core;
 
 static LOCK: Mutex<()> = Mutex::new(());
 

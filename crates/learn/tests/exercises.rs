@@ -17,9 +17,9 @@ use std::process::Command;
 use std::sync::Mutex;
 use std::time::Duration;
 
-use learn::check::{Limits, Verdict, check_with};
 use learn::exercise::{EXERCISES, Exercise, exercise};
 use learn::lab::Lab;
+use learn_check::check::{Limits, Verdict, check_with};
 
 mod author;
 use author::{author_lab, root};

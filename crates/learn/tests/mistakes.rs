@@ -12,11 +12,12 @@ use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 use std::time::Duration;
 
-use learn::check::{Limits, Verdict, check_core, check_with};
 use learn::core::CORE_EXERCISES;
 use learn::lab::Lab;
 use learn::mistakes::{MISTAKES, Mistake, made_in, source_file};
 use learn::path::{Item, find};
+use learn_check::check::{Limits, Verdict, check_with};
+use learn_check::core_check::check_core;
 
 mod author;
 use author::author_lab;

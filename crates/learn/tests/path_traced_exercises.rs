@@ -12,9 +12,9 @@ use std::path::Path;
 use std::sync::Mutex;
 use std::time::Duration;
 
-use learn::check::{Limits, Verdict, check_picture_with, check_with};
 use learn::exercise::{Exercise, exercise_named};
 use learn::lab::Lab;
+use learn_check::check::{Limits, Verdict, check_picture_with, check_with};
 
 mod author;
 use author::author_lab;

@@ -13,9 +13,9 @@
 use std::path::Path;
 use std::time::Duration;
 
-use learn::check::{Limits, Verdict};
 use learn::lab::Lab;
-use learn::shader_check::check_shader;
+use learn_check::check::{Limits, Verdict};
+use learn_check::shader_check::check_shader;
 
 /// A lab in a fresh temporary folder, building into the shared target.
 fn temp_lab() -> (tempfile::TempDir, Lab) {

@@ -74,7 +74,7 @@ pub fn make_lab_page(dir: &Path, scenes: &Path) -> Result<Vec<PathBuf>, JobError
     let mut stages = Vec::new();
     for (i, stage) in learn::shader::STAGES.iter().enumerate() {
         let scene = stage.scene.map(|_| under_water.as_path());
-        let image = learn::check::reference_image_in(stage.chapter, scene)
+        let image = learn_check::picture::reference_image_in(stage.chapter, scene)
             .map_err(|e| JobError::Book(format!("the lab page's reference {i}: {e}")))?;
         let path = dir.join(format!("check-{}.png", i + 1));
         save_png(&image, &path)?;
@@ -153,13 +153,13 @@ fn page_data(
         "scenes": { "lab": scene(lab)?, "underWater": scene(water)? },
         "samples": samples,
         "compare": { "width": COMPARE.0, "height": COMPARE.1 },
-        "check": { "width": learn::check::WIDTH, "height": learn::check::HEIGHT },
+        "check": { "width": learn::limits::WIDTH, "height": learn::limits::HEIGHT },
         "tolerance": {
             "withinLevels": raylab::tolerance::WITHIN_LEVELS,
             "shareWithin": raylab::tolerance::SHARE_WITHIN,
             "meanBelow": raylab::tolerance::MEAN_BELOW,
         },
-        "differenceGain": learn::compare::GAIN,
+        "differenceGain": learn_check::compare::GAIN,
         "srgbThresholds": srgb_thresholds(),
         "chapters": chapters,
         "stages": stages,
@@ -172,8 +172,8 @@ fn page_data(
 fn packed((scene, camera): &(Scene, Camera), spp: u32) -> Result<Inputs, JobError> {
     let pattern = (spp != 1 && spp != 5).then_some(Pattern::Grid);
     let settings = Settings {
-        width: learn::check::WIDTH,
-        height: learn::check::HEIGHT,
+        width: learn::limits::WIDTH,
+        height: learn::limits::HEIGHT,
         max_depth: 10,
         epsilon: 1e-4,
         sampling: Sampling::new(spp, pattern, 0).map_err(|e| JobError::Book(e.to_string()))?,

@@ -25,8 +25,8 @@ pub fn make_learn_figures(dir: &Path) -> Result<Vec<PathBuf>, JobError> {
     let args = [
         "ch02-shadows".to_owned(),
         "--epsilon=0".to_owned(),
-        format!("--width={}", learn::check::WIDTH),
-        format!("--height={}", learn::check::HEIGHT),
+        format!("--width={}", learn::limits::WIDTH),
+        format!("--height={}", learn::limits::HEIGHT),
         "--no-diagrams".to_owned(),
         "--quiet".to_owned(),
         format!("--out={}", dir.join("ch02-acne").display()),
@@ -36,8 +36,8 @@ pub fn make_learn_figures(dir: &Path) -> Result<Vec<PathBuf>, JobError> {
         .map_err(|e| raylab_cli::CliError::Usage(e.to_string()))?;
     let report = raylab_cli::run(chapter, &options)?;
     let acne = report.rendered.srgb;
-    let reference = learn::check::reference_image(2);
-    let difference = learn::compare::signed_difference(&acne, &reference);
+    let reference = learn_check::picture::reference_image(2);
+    let difference = learn_check::compare::signed_difference(&acne, &reference);
     let mut written = Vec::new();
     let difference = with_sign_legend(&magnified(&difference));
     for (name, image) in NAMES.iter().zip([magnified(&acne), difference]) {
@@ -54,7 +54,7 @@ fn with_sign_legend(difference: &RgbImage) -> RgbImage {
     let (width, height) = difference.dimensions();
     let mut canvas = Canvas::new(width, height + 48, WHITE);
     canvas.draw_rgb_image(difference, 0, 0, 1);
-    let full = 255.0 / learn::compare::GAIN;
+    let full = 255.0 / learn_check::compare::GAIN;
     let lines = [
         "red: brighter than the reference; blue: darker; black: the same".to_owned(),
         format!("a mean change of {full:.0} levels or more shows at full strength"),

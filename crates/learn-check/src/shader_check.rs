@@ -22,12 +22,14 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use crate::check::{
-    Builds, Limits, Picture, Verdict, cargo_build, render_and_compare, size_flags, took,
-};
-use crate::lab::Lab;
-use crate::run::{panic_message, run_with_limit, shown};
-use crate::shader::{CHAPTER, NAME, PACKAGE, PAGE, STAGES, Stage};
+use learn::lab::Lab;
+use learn::limits::{HEIGHT, WIDTH};
+use learn::run::{panic_message, run_with_limit, shown};
+use learn::shader::{CHAPTER, NAME, PACKAGE, PAGE, STAGES, Stage};
+
+use crate::build::{Builds, cargo_build, took};
+use crate::check::{Limits, Verdict};
+use crate::picture::{Picture, render_and_compare, size_flags};
 
 /// The words of chapter 10's error when it finds no GPU adapter.
 const NO_ADAPTER: &str = "no GPU adapter found";
@@ -72,8 +74,8 @@ fn check_steps(lab: &Lab, limits: Limits, out: &mut dyn Write) -> Verdict {
             "  ✓ {}, the render ({}×{}) matches chapter {}'s within the lab model's tolerance: {} is \
              right",
             stage.label(),
-            crate::check::WIDTH,
-            crate::check::HEIGHT,
+            WIDTH,
+            HEIGHT,
             stage.chapter,
             stage.task
         );
@@ -87,7 +89,7 @@ fn check_steps(lab: &Lab, limits: Limits, out: &mut dyn Write) -> Verdict {
     if let Err(error) = lab.record_pass(CHAPTER) {
         let _ = writeln!(out, "learn: could not record the pass: {error}");
     }
-    let _ = writeln!(out, "{}", crate::path::next_line(NAME, &lab.progress()));
+    let _ = writeln!(out, "{}", learn::path::next_line(NAME, &lab.progress()));
     Verdict::Passed
 }
 

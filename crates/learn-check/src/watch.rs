@@ -10,9 +10,11 @@ use std::time::Duration;
 
 use raylab_cli::saves::{Saves, Watched, ctrl_c};
 
-use crate::check::{Limits, Verdict, check, check_core};
-use crate::lab::Lab;
-use crate::path::Item;
+use learn::lab::Lab;
+use learn::path::Item;
+
+use crate::check::{Limits, Verdict, check};
+use crate::core_check::check_core;
 use crate::shader_check::check_shader;
 
 /// Check, then check again after every save, until Ctrl-C.

@@ -15,9 +15,9 @@ use image::RgbImage;
 use raylab::linear_image::LinearImage;
 use raylab::{Camera, NoProgress, Scene};
 
-use crate::check::save_images;
 use crate::compare::signed_colour;
-use crate::run::shown;
+use crate::report::save_images;
+use learn::run::shown;
 
 /// The most pixel channels that may lie more than [`FAR`] standard errors
 /// from the reference: 0.1 %. Normal noise puts 0.006 % there; a pixel's
