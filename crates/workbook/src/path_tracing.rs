@@ -21,7 +21,7 @@ use raylab_cli::CliError;
 use raylab_cli::output::{save_png, save_text};
 use raylab_plot::colour::{WHITE, series_colour};
 use raylab_plot::{
-    Canvas, Colormap, ColourScale, Corner, HeatmapFigure, LinePlot, Rgb, Series, montage,
+    Anchor, Canvas, Colormap, ColourScale, Corner, HeatmapFigure, LinePlot, Rgb, Series, montage,
 };
 
 use crate::measure::{
@@ -615,13 +615,16 @@ fn materials_figure(
     let scale = (h / side).max(1);
     let (lab8, fresnel8) = (lab.image.to_srgb8(), fresnel.image.to_srgb8());
     let crops = [&lab8, &fresnel8].map(|image| magnified_crop(image, at, (side, side), scale));
+    let rim_box = [255, 200, 0];
+    let [lab_boxed, fresnel_boxed] =
+        [&lab8, &fresnel8].map(|image| outline_crop(image, at, (side, side), rim_box));
     let figure = montage(
         &format!(
             "The glass ball, {w}×{h}, {COMPARE_SPP} paths per pixel: lab materials and Fresnel"
         ),
         &[
-            ("--materials lab", &lab8),
-            ("--materials fresnel", &fresnel8),
+            ("--materials lab (yellow box: the rim crop)", &lab_boxed),
+            ("--materials fresnel", &fresnel_boxed),
             (
                 &format!("lab: the rim, {side}×{side} pixels, ×{scale}"),
                 &crops[0],
@@ -670,9 +673,34 @@ fn materials_figure(
         100.0 * raylab::optics::fresnel(-1.0, 1.0 / 1.5),
         100.0 * raylab::optics::fresnel(-0.2, 1.0 / 1.5)
     );
+    // Where the two differ, as a ratio: at this size the pictures look
+    // alike, and the table's few per cent would not show by eye. Both use
+    // the same seed, so a pixel whose paths never meet the glass is the
+    // same in both, and its ratio exactly 1.
+    let ratio = log2_ratio(&lab.image, &fresnel.image);
+    let range = symmetric_range(&ratio, 0.999).min(3.0);
+    let caption = format!(
+        "Each pixel: log2 of the Fresnel render's luminance over the lab render's, from −{range} \
+         (blue, {:.0} % of the light) to +{range} (red, {:.0} %), clamped beyond; grey: the same. \
+         Both use the same seed, so only pixels whose paths meet the glass can differ.",
+        100.0 * 2f32.powf(-range),
+        100.0 * 2f32.powf(range)
+    );
+    let ratio_figure = HeatmapFigure {
+        title: "Fresnel over the lab's materials: where the glass differs",
+        caption: &caption,
+        values: &ratio,
+        width: w as usize,
+        height: h as usize,
+        colour_scale: ColourScale::linear(-range, range),
+        colour_bar_label: "log2 (fresnel ÷ lab)",
+        colormap: Colormap::Diverging,
+        pixel_scale: Some(1),
+    }
+    .render();
     save_all(
         dir,
-        &[("materials.png", &figure)],
+        &[("materials.png", &figure), ("ratio.png", &ratio_figure)],
         &[("materials.md", &text)],
     )
 }
@@ -884,10 +912,10 @@ fn convergence_figures(dir: &Path, size: Size, quiet: bool) -> Result<Vec<PathBu
     let magnified: Vec<(String, RgbImage)> = noise
         .into_iter()
         .map(|(spp, image)| {
-            let label = if spp == REFERENCE_SPP {
-                format!("{spp} (the reference, seed 1)")
-            } else {
-                format!("{spp} paths per pixel")
+            let label = match spp {
+                REFERENCE_SPP => format!("{spp} (the reference, seed 1)"),
+                1 => "1 path per pixel".to_owned(),
+                _ => format!("{spp} paths per pixel"),
             };
             (label, magnified_crop(&image, (0.0, 0.0), (w, h), scale))
         })
@@ -898,9 +926,9 @@ fn convergence_figures(dir: &Path, size: Size, quiet: bool) -> Result<Vec<PathBu
         &refs,
         4,
     );
-    let plot = convergence_plot(&points, (w, h));
     let csv = convergence_csv(&points);
     let table = convergence_markdown(&points, (w, h), reference_variance.sqrt());
+    let plot = convergence_plot(&points, (w, h), reference_variance.sqrt());
     save_all(
         dir,
         &[("convergence.png", &plot), ("noise.png", &crops)],
@@ -908,8 +936,13 @@ fn convergence_figures(dir: &Path, size: Size, quiet: bool) -> Result<Vec<PathBu
     )
 }
 
-fn convergence_plot(points: &[ConvergencePoint], (w, h): (u32, u32)) -> RgbImage {
-    let start = points[0].rmse;
+/// Two panels. Above, the error as measured on log–log axes with the
+/// 1/√N line and the reference's own noise as a dashed floor. Below, the
+/// series the page reads, each times √N, where 1/√N is a flat line: the
+/// error as measured, the error without the reference's noise, and what
+/// the render's own variance predicts.
+fn convergence_plot(points: &[ConvergencePoint], (w, h): (u32, u32), floor: f64) -> RgbImage {
+    let start = points[0].corrected;
     let guide: Vec<(f64, f64)> = COUNTS
         .iter()
         .map(|&n| (f64::from(n), start / f64::from(n).sqrt()))
@@ -920,27 +953,83 @@ fn convergence_plot(points: &[ConvergencePoint], (w, h): (u32, u32)) -> RgbImage
             .filter_map(|p| f(p).map(|v| (f64::from(p.spp), v.max(1e-6))))
             .collect()
     };
-    LinePlot::new(format!(
-        "Chapter 6's error against a {REFERENCE_SPP}-path render, {w}×{h}"
-    ))
-    .x_label("paths per pixel N (log scale)")
-    .y_label("RMSE, linear radiance")
-    .log_x()
-    .x_range(1.0, 2048.0)
-    .log_y(1e-4)
-    .legend(Corner::BottomLeft)
-    .series(Series::new(
-        "measured",
-        series_colour(0),
-        series(|p| Some(p.rmse)),
-    ))
-    .series(Series::new(
-        "predicted by the render's own variance",
-        series_colour(1),
-        series(|p| p.predicted),
-    ))
-    .series(Series::new("1/√N from N = 1", [150, 150, 150], guide).without_markers())
-    .render(820, 520)
+    let times_root_n = |f: fn(&ConvergencePoint) -> Option<f64>| -> Vec<(f64, f64)> {
+        series(f)
+            .into_iter()
+            .map(|(n, v)| (n, v * n.sqrt()))
+            .collect()
+    };
+    let last = f64::from(COUNTS[COUNTS.len() - 1]);
+    let error = LinePlot::new("The error, as measured")
+        .x_label("paths per pixel N (log scale)")
+        .y_label("RMSE, linear radiance")
+        .log_x()
+        .x_range(1.0, last)
+        .log_y(1e-3)
+        .legend(Corner::TopRight)
+        .series(Series::new(
+            "measured against the reference",
+            series_colour(0),
+            series(|p| Some(p.rmse)),
+        ))
+        .series(Series::new("1/√N from N = 1", [150, 150, 150], guide).without_markers());
+    let highest = times_root_n(|p| Some(p.rmse))
+        .iter()
+        .map(|p| p.1)
+        .fold(start, f64::max);
+    let flat = LinePlot::new("The same times √N: flat where the error falls as 1/√N")
+        .x_label("paths per pixel N (log scale)")
+        .y_label("RMSE × √N")
+        .log_x()
+        .x_range(1.0, last)
+        .y_range(0.0, highest * 1.25)
+        .legend(Corner::BottomLeft)
+        .series(Series::new(
+            "measured against the reference",
+            series_colour(0),
+            times_root_n(|p| Some(p.rmse)),
+        ))
+        .series(Series::new(
+            "without the reference's own noise",
+            series_colour(2),
+            times_root_n(|p| Some(p.corrected)),
+        ))
+        .series(Series::new(
+            "predicted by the render's own variance",
+            series_colour(1),
+            times_root_n(|p| p.predicted),
+        ));
+    let (width, panel_h, title_h) = (820u32, 420u32, 44u32);
+    let mut top = error.render_canvas(width, panel_h);
+    let from = error.data_to_pixel(width, panel_h, 1.0, floor);
+    let to = error.data_to_pixel(width, panel_h, last, floor);
+    top.dashed_line(from, to, [85, 85, 85], 1.5, 6.0, 4.0);
+    // Under the line at its left end, far below the error at few paths.
+    top.text(
+        from.0 + 8.0,
+        from.1 + 5.0,
+        &format!("the reference's own noise, {floor:.4}"),
+        13.0,
+        [85, 85, 85],
+        Anchor::TOP_LEFT,
+    );
+    let mut canvas = Canvas::new(width, title_h + 2 * panel_h, WHITE);
+    canvas.text(
+        width as f32 / 2.0,
+        14.0,
+        &format!("Chapter 6's error against a {REFERENCE_SPP}-path render, {w}×{h}"),
+        20.0,
+        raylab_plot::colour::TEXT,
+        Anchor::TOP_CENTRE,
+    );
+    canvas.draw_rgb_image(&top.to_rgb_image(), 0, title_h as i32, 1);
+    canvas.draw_rgb_image(
+        &flat.render(width, panel_h),
+        0,
+        (title_h + panel_h) as i32,
+        1,
+    );
+    canvas.to_rgb_image()
 }
 
 fn convergence_csv(points: &[ConvergencePoint]) -> String {
