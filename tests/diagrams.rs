@@ -74,22 +74,26 @@ fn the_heat_map_of_chapter_1_is_uniform() {
         .expect("kept for the diagrams");
     assert!(maps.deepest.iter().all(|&d| d == 1));
     assert!(maps.rays.iter().all(|&n| n == 1));
-    // The drawn map: every pixel of the 80 × 60 grid has the same colour.
+    // The drawn map: every pixel of the 80 × 60 grid has depth 1's colour
+    // (the legend's block for depth 1 has it too).
     let map = image::open(report.out_dir.join("depth.png"))
         .unwrap()
         .to_rgb8();
-    let grid_colours: std::collections::HashSet<_> = map
-        .pixels()
-        .filter(|p| p.0 == raylab_plot::viridis(0.0))
-        .take(80 * 60)
-        .collect();
-    assert_eq!(grid_colours.len(), 1);
-    assert!(
-        map.pixels()
-            .filter(|p| p.0 == raylab_plot::viridis(0.0))
-            .count()
-            >= 80 * 60
-    );
+    let depth_1 =
+        raylab_plot::ColourScale::steps(1, 2).colour(1.0, raylab_plot::Colormap::Distinct);
+    // Rows with an unbroken run of 80 such pixels: the grid's 60 rows (the
+    // legend's block is far narrower).
+    let full_rows = map
+        .rows()
+        .filter(|row| {
+            let mut run = 0;
+            row.clone().any(|p| {
+                run = if p.0 == depth_1 { run + 1 } else { 0 };
+                run >= 80
+            })
+        })
+        .count();
+    assert_eq!(full_rows, 60);
 }
 
 #[test]

@@ -115,6 +115,10 @@ pub struct LinePlot {
     series: Vec<Series>,
     markers: Vec<VerticalMarker>,
     legend: Option<Corner>,
+    /// A second y axis on the right, for series in other units: a plot of
+    /// its own whose y label, y range, log scale and series are used (its
+    /// title, x settings, markers and legend are not).
+    right: Option<Box<LinePlot>>,
 }
 
 impl LinePlot {
@@ -132,7 +136,16 @@ impl LinePlot {
             series: Vec::new(),
             markers: Vec::new(),
             legend: Some(Corner::TopRight),
+            right: None,
         }
+    }
+
+    /// Adds a second y axis on the right for the series of `axis`, in its
+    /// units: its y label, range and log scale make the axis. Its series
+    /// join the legend (name them so that the reader knows which axis).
+    pub fn right_axis(mut self, axis: LinePlot) -> LinePlot {
+        self.right = Some(Box::new(axis));
+        self
     }
 
     /// Text under the x axis.
@@ -227,10 +240,52 @@ impl LinePlot {
         draw_axes(&mut canvas, &layout);
         self.draw_marker_lines(&mut canvas, &layout.frame);
         self.draw_series(&mut canvas, &layout.frame);
+        if let (Some(right), Some(axis)) = (&self.right, &layout.right) {
+            right.draw_series(&mut canvas, &axis.frame);
+            draw_right_axis(&mut canvas, right, axis);
+        }
         self.draw_labels(&mut canvas, &layout);
         let legend_box = self.draw_legend(&mut canvas, &layout.frame);
-        self.draw_marker_labels(&mut canvas, &layout.frame, legend_box);
+        let ink = self.ink(&layout);
+        self.draw_marker_labels(&mut canvas, &layout.frame, legend_box, &ink);
         canvas
+    }
+
+    /// Points along every drawn line, a pixel or two apart: what a label
+    /// must not cover.
+    fn ink(&self, layout: &Layout) -> Vec<(f32, f32)> {
+        let mut ink = Vec::new();
+        if self.markers.is_empty() {
+            return ink; // only marker labels look for it
+        }
+        let mut trace = |plot: &LinePlot, frame: &Frame| {
+            for series in &plot.series {
+                let pixels: Vec<Option<(f32, f32)>> = series
+                    .points
+                    .iter()
+                    .map(|&(x, y)| {
+                        let y = plot.clamp_y(y);
+                        (x.is_finite() && y.is_finite()).then(|| frame.pixel_of(x, y))
+                    })
+                    .collect();
+                for pair in pixels.windows(2) {
+                    let (Some(a), Some(b)) = (pair[0], pair[1]) else {
+                        continue;
+                    };
+                    let steps = ((b.0 - a.0).hypot(b.1 - a.1) / 2.0).ceil().max(1.0) as usize;
+                    ink.extend((0..=steps).map(|k| {
+                        let f = k as f32 / steps as f32;
+                        (a.0 + (b.0 - a.0) * f, a.1 + (b.1 - a.1) * f)
+                    }));
+                }
+                ink.extend(pixels.iter().flatten());
+            }
+        };
+        trace(self, &layout.frame);
+        if let (Some(right), Some(axis)) = (&self.right, &layout.right) {
+            trace(right, &axis.frame);
+        }
+        ink
     }
 
     /// Where the data point `(x, y)` lands in a `width` × `height` render,
@@ -272,21 +327,46 @@ impl LinePlot {
             .map(|label| text_width(label, TICK_SIZE))
             .fold(0.0, f32::max);
         let left = PAD + label_h + 10.0 + widest_y_label + 6.0 + TICK_LENGTH;
-        let right = width - PAD - RIGHT_ALLOWANCE;
+        // A right axis takes the same room on its side as the left one.
+        let right_ticks = self.right.as_ref().map(|right| {
+            let scale = right.y_scale();
+            let mut ticks = scale.ticks(bottom - top, 42.0, false);
+            if let Some(zero) = right.zero_row() {
+                ticks.values.insert(0, zero);
+                ticks.labels.insert(0, "0".to_owned());
+            }
+            (scale, ticks)
+        });
+        let right = match &right_ticks {
+            None => width - PAD - RIGHT_ALLOWANCE,
+            Some((_, ticks)) => {
+                let widest = ticks
+                    .labels
+                    .iter()
+                    .map(|label| text_width(label, TICK_SIZE))
+                    .fold(0.0, f32::max);
+                width - (PAD + label_h + 10.0 + widest + 6.0 + TICK_LENGTH)
+            }
+        };
 
         let x_scale = self.x_scale();
         let x_ticks = x_scale.spaced_ticks(right - left, self.integer_x_ticks, TICK_SIZE);
+        let frame = Frame {
+            left,
+            top,
+            right: right.max(left + 1.0),
+            bottom: bottom.max(top + 1.0),
+            x: x_scale,
+            y: y_scale,
+        };
         Layout {
-            frame: Frame {
-                left,
-                top,
-                right: right.max(left + 1.0),
-                bottom: bottom.max(top + 1.0),
-                x: x_scale,
-                y: y_scale,
-            },
+            frame,
             x_ticks,
             y_ticks,
+            right: right_ticks.map(|(y, ticks)| RightAxis {
+                frame: Frame { y, ..frame },
+                ticks,
+            }),
         }
     }
 
@@ -497,7 +577,10 @@ impl LinePlot {
     /// Draws the legend (if any series is named) and returns its box.
     fn draw_legend(&self, canvas: &mut Canvas, frame: &Frame) -> Option<LabelBox> {
         let corner = self.legend?;
-        let named: Vec<&Series> = self.series.iter().filter(|s| !s.name.is_empty()).collect();
+        let right_series = self.right.iter().flat_map(|right| &right.series);
+        let named: Vec<&Series> = (self.series.iter().chain(right_series))
+            .filter(|s| !s.name.is_empty())
+            .collect();
         if named.is_empty() {
             return None;
         }
@@ -542,8 +625,16 @@ impl LinePlot {
 
     /// Writes each marker's label near the top of its line, on a pale
     /// backing so grid lines do not cut through the letters. Labels move
-    /// down out of the way of the legend and of each other.
-    fn draw_marker_labels(&self, canvas: &mut Canvas, frame: &Frame, legend: Option<LabelBox>) {
+    /// down out of the way of the legend, of each other and of the lines
+    /// (`ink`); if no spot is clear of the lines, the first clear of the
+    /// legend and the other labels will do.
+    fn draw_marker_labels(
+        &self,
+        canvas: &mut Canvas,
+        frame: &Frame,
+        legend: Option<LabelBox>,
+        ink: &[(f32, f32)],
+    ) {
         let metrics = line_metrics(LEGEND_SIZE);
         let h = metrics.line_height();
         let mut taken: Vec<LabelBox> = legend.into_iter().collect();
@@ -562,7 +653,7 @@ impl LinePlot {
                 .filter(|&x| x >= frame.left + 4.0 && x + w <= frame.right - 4.0);
             let sides: Vec<f32> = sides.collect();
             let rows = (0..).map(|row| frame.top + 6.0 + row as f32 * (h + 2.0));
-            let spot = rows
+            let spots: Vec<LabelBox> = rows
                 .take_while(|&y| y + h <= frame.bottom)
                 .flat_map(|y| {
                     sides.iter().map(move |&x| LabelBox {
@@ -572,7 +663,22 @@ impl LinePlot {
                         h,
                     })
                 })
-                .find(|spot| !taken.iter().any(|other| other.overlaps(spot)));
+                .filter(|spot| !taken.iter().any(|other| other.overlaps(spot)))
+                .collect();
+            let inked = |spot: &LabelBox| {
+                ink.iter().any(|&(x, y)| {
+                    let near = LINE_WIDTH + 1.0;
+                    x >= spot.x - near
+                        && x <= spot.x + spot.w + near
+                        && y >= spot.y - near
+                        && y <= spot.y + spot.h + near
+                })
+            };
+            let spot = spots
+                .iter()
+                .find(|spot| !inked(spot))
+                .or(spots.first())
+                .copied();
             let Some(spot) = spot else {
                 continue; // no free room anywhere: leave the line unlabelled
             };
@@ -589,6 +695,26 @@ impl LinePlot {
             taken.push(spot);
         }
     }
+}
+
+/// The right axis: its spine, ticks, tick labels and rotated label.
+fn draw_right_axis(canvas: &mut Canvas, plot: &LinePlot, axis: &RightAxis) {
+    let frame = &axis.frame;
+    let right = crisp(frame.right);
+    canvas.stroke_line(right, frame.top, right, frame.bottom + 0.5, AXIS, 1.0);
+    let label_left = frame.right + TICK_LENGTH + 6.0;
+    let mut widest: f32 = 0.0;
+    for (value, label) in axis.ticks.values.iter().zip(&axis.ticks.labels) {
+        let y = frame.y_pixel(*value);
+        let py = crisp(y);
+        canvas.stroke_line(right, py, right + TICK_LENGTH, py, AXIS, 1.0);
+        canvas.text(label_left, y, label, TICK_SIZE, TEXT, Anchor::MIDDLE_LEFT);
+        widest = widest.max(text_width(label, TICK_SIZE));
+    }
+    let middle_y = (frame.top + frame.bottom) / 2.0;
+    let x = label_left + widest + 10.0;
+    let label = plot.y_label_text();
+    canvas.text_vertical(x, middle_y, &label, LABEL_SIZE, TEXT, Anchor::TOP_CENTRE);
 }
 
 /// Frame, spines and tick marks.
@@ -618,6 +744,13 @@ struct Layout {
     frame: Frame,
     x_ticks: Ticks,
     y_ticks: Ticks,
+    right: Option<RightAxis>,
+}
+
+/// A second y axis: the same rectangle with the right axis's y range.
+struct RightAxis {
+    frame: Frame,
+    ticks: Ticks,
 }
 
 /// The plotting rectangle in pixels and the data range each axis shows.
@@ -809,6 +942,84 @@ mod tests {
             .filter(|p| p.0[0] > 150 && p.0[1] < 80)
             .count();
         assert!(reddish > 30, "dashed line and label in the marker colour");
+    }
+
+    #[test]
+    fn a_right_axis_maps_its_series_to_its_own_range_and_joins_the_legend() {
+        let left = Series::new("pixels", BLUE, [(1.0, 0.0), (2.0, 100.0)]);
+        let right_points = [(1.0, 255.0), (2.0, 0.0)];
+        let red = series_colour(3);
+        let axis = LinePlot::new("")
+            .y_label("largest change")
+            .y_range(0.0, 255.0)
+            .series(Series::new(
+                "largest change (right axis)",
+                red,
+                right_points,
+            ));
+        let plot = LinePlot::new("")
+            .y_range(0.0, 100.0)
+            .series(left)
+            .right_axis(axis)
+            .legend(Corner::BottomLeft);
+        let (w, h) = (600, 400);
+        let layout = plot.layout(w, h);
+        let axis = layout.right.as_ref().expect("a right axis");
+        // 255 on the right is the frame's top, where 100 is on the left.
+        assert_eq!(axis.frame.y_pixel(255.0), layout.frame.top);
+        assert_eq!(layout.frame.y_pixel(100.0), layout.frame.top);
+        assert!(layout.frame.right < w as f32 - 60.0, "room for the labels");
+        let image = plot.render(w, h);
+        // The right series' first point, (1, 255), is at the top left corner
+        // of the frame; the left series' point (1, 0) at the bottom left.
+        let corner = axis.frame.pixel_of(1.0, 255.0);
+        assert_eq!(pixel_at(&image, corner), red);
+        let plain = LinePlot::new("")
+            .y_range(0.0, 100.0)
+            .series(Series::new("pixels", BLUE, [(1.0, 0.0), (2.0, 100.0)]))
+            .legend(Corner::BottomLeft)
+            .layout(w, h);
+        assert!(plain.right.is_none());
+    }
+
+    #[test]
+    fn a_marker_label_moves_off_a_line_it_would_cover() {
+        // A falling line passes through the top right of the marker at x = 2,
+        // where its label would go first.
+        let points = [(1.0, 10.0), (2.0, 10.0), (3.0, 9.0), (4.0, 0.0)];
+        let plot = LinePlot::new("")
+            .x_range(1.0, 4.0)
+            .y_range(0.0, 10.0)
+            .series(Series::new("", BLUE, points).without_markers())
+            .vertical_marker(2.5, "here", [200, 0, 0])
+            .no_legend();
+        let image = plot.render(500, 300);
+        let layout = plot.layout(500, 300);
+        let ink = plot.ink(&layout);
+        // Find the red label's pixels and check none lies on the line's ink.
+        let red: Vec<(u32, u32)> = image
+            .enumerate_pixels()
+            .filter(|(x, _, p)| {
+                p.0[0] > 150 && p.0[1] < 80 && (*x as f32 - layout.frame.x_pixel(2.5)).abs() > 3.0
+            })
+            .map(|(x, y, _)| (x, y))
+            .collect();
+        assert!(!red.is_empty(), "the label is drawn");
+        // The box the label's letters fill, and a pixel around it.
+        let left = red.iter().map(|p| p.0).min().unwrap_or(0) as f32 - 1.0;
+        let right = red.iter().map(|p| p.0).max().unwrap_or(0) as f32 + 1.0;
+        let top = red.iter().map(|p| p.1).min().unwrap_or(0) as f32 - 1.0;
+        let bottom = red.iter().map(|p| p.1).max().unwrap_or(0) as f32 + 1.0;
+        let covered = ink
+            .iter()
+            .any(|&(x, y)| x >= left && x <= right && y >= top && y <= bottom);
+        assert!(
+            !covered,
+            "the label ({left}..{right}, {top}..{bottom}) covers the line"
+        );
+        // The first spot, right of the marker at the top, is on the line:
+        // the label moved down from there.
+        assert!(top > layout.frame.top + 10.0, "{top}");
     }
 
     #[test]

@@ -21,6 +21,12 @@ pub enum Colormap {
     /// signed values: 0.5 is zero, below it blue, above it red, with equal
     /// lightness at equal distances either side.
     Diverging,
+    /// Ten colours far apart, one per whole number, for counts such as a
+    /// ray's depth where 2 and 3 must not look alike: the first a pale grey
+    /// (the common case recedes), then matplotlib's "tab10" hues, and the
+    /// last a near-black (the limit stands out). Meant for
+    /// [`ColourScale::steps`](crate::ColourScale::steps).
+    Distinct,
 }
 
 impl Colormap {
@@ -30,9 +36,38 @@ impl Colormap {
             Colormap::Viridis => viridis(t),
             Colormap::Magma => magma(t),
             Colormap::Diverging => diverging(t),
+            Colormap::Distinct => {
+                let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };
+                DISTINCT[(t * (DISTINCT.len() - 1) as f32).round() as usize]
+            }
+        }
+    }
+
+    /// The colour of step `index` of `count` whole-number steps: for
+    /// [`Colormap::Distinct`] its own entry (so step 0 is always the grey,
+    /// however many steps there are), for the others the map at
+    /// `index / (count - 1)`.
+    pub fn step(self, index: usize, count: usize) -> Rgb {
+        match self {
+            Colormap::Distinct => DISTINCT[index.min(DISTINCT.len() - 1)],
+            _ => self.sample(index as f32 / count.saturating_sub(1).max(1) as f32),
         }
     }
 }
+
+/// The entries of [`Colormap::Distinct`].
+const DISTINCT: [Rgb; 10] = [
+    [222, 222, 222], // pale grey
+    [31, 119, 180],  // blue
+    [255, 127, 14],  // orange
+    [44, 160, 44],   // green
+    [214, 39, 40],   // red
+    [148, 103, 189], // purple
+    [140, 86, 75],   // brown
+    [227, 119, 194], // pink
+    [188, 189, 34],  // olive
+    [30, 30, 30],    // near-black
+];
 
 /// matplotlib's viridis at `t` in `[0, 1]` (clamped; NaN gives the low end).
 pub fn viridis(t: f32) -> Rgb {
@@ -139,6 +174,26 @@ mod tests {
         let (a, b) = (VIRIDIS[0], VIRIDIS[1]);
         for i in 0..3 {
             assert!(mid[i] >= a[i].min(b[i]) && mid[i] <= a[i].max(b[i]));
+        }
+    }
+
+    #[test]
+    fn distinct_steps_are_their_own_entries_and_all_differ() {
+        assert_eq!(Colormap::Distinct.step(0, 2), DISTINCT[0]);
+        assert_eq!(
+            Colormap::Distinct.step(1, 2),
+            DISTINCT[1],
+            "not the far end"
+        );
+        assert_eq!(Colormap::Distinct.step(9, 10), [30, 30, 30]);
+        assert_eq!(Colormap::Distinct.step(42, 10), DISTINCT[9], "clamped");
+        assert_eq!(Colormap::Viridis.step(1, 3), viridis(0.5));
+        // Every pair differs by at least 60 in some channel.
+        for (i, a) in DISTINCT.iter().enumerate() {
+            for b in &DISTINCT[i + 1..] {
+                let far = (0..3).any(|c| a[c].abs_diff(b[c]) >= 60);
+                assert!(far, "{a:?} and {b:?} look alike");
+            }
         }
     }
 

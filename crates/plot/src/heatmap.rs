@@ -9,9 +9,9 @@ use image::RgbImage;
 
 use super::canvas::Canvas;
 use super::colormap::Colormap;
-use super::colour::{FRAME, TEXT, TEXT_MUTED, WHITE};
+use super::colour::{FRAME, Rgb, TEXT, TEXT_MUTED, WHITE};
 use super::text::{Anchor, line_metrics, text_width, wrap_text};
-use super::ticks::{Ticks, integer_ticks, linear_ticks, log_ticks, thin};
+use super::ticks::{Ticks, integer_ticks, linear_ticks, log_ticks, log_ticks_at, thin};
 
 const PAD: f32 = 16.0;
 const TITLE_SIZE: f32 = 20.0;
@@ -21,6 +21,9 @@ const LABEL_SIZE: f32 = 15.0;
 const BAR_GAP: u32 = 18;
 const BAR_WIDTH: u32 = 18;
 const TICK_LENGTH: f32 = 4.0;
+/// The least room between two tick labels on the colour bar, in pixels: a
+/// 13 px label needs about this much to stay apart from the next.
+const TICK_GAP: f32 = 14.0;
 /// The automatic pixel scale aims for this many pixels on the longer side.
 const TARGET_SIDE: usize = 480;
 
@@ -34,6 +37,9 @@ pub struct ColourScale {
     /// Spread colours evenly over orders of magnitude instead of over the
     /// values themselves: 1, 10 and 100 are equally far apart.
     pub log: bool,
+    /// Whole numbers, each its own colour block: the colour bar becomes a
+    /// legend with one entry per number (see [`ColourScale::steps`]).
+    pub steps: bool,
 }
 
 impl ColourScale {
@@ -43,6 +49,19 @@ impl ColourScale {
             min,
             max,
             log: false,
+            steps: false,
+        }
+    }
+
+    /// One colour per whole number from `min` to `max` (values are rounded
+    /// first): for counts such as depth, where a smooth bar would make 1, 2
+    /// and 3 three near-identical shades. Best with [`Colormap::Distinct`].
+    pub fn steps(min: u32, max: u32) -> ColourScale {
+        ColourScale {
+            min: min as f32,
+            max: max.max(min) as f32,
+            log: false,
+            steps: true,
         }
     }
 
@@ -53,6 +72,28 @@ impl ColourScale {
             min,
             max,
             log: true,
+            steps: false,
+        }
+    }
+
+    /// How many whole-number steps a [`ColourScale::steps`] scale has.
+    fn step_count(&self) -> usize {
+        (self.max - self.min).round().max(0.0) as usize + 1
+    }
+
+    /// The colour of `value` in `colormap`: its step's colour on a steps
+    /// scale (rounded, clamped to the ends), else the map at its place.
+    pub fn colour(&self, value: f32, colormap: Colormap) -> Rgb {
+        if self.steps {
+            let count = self.step_count();
+            let index = if value.is_nan() {
+                0
+            } else {
+                ((value.round() - self.min).max(0.0) as usize).min(count - 1)
+            };
+            colormap.step(index, count)
+        } else {
+            colormap.sample(self.normalise(value))
         }
     }
 
@@ -82,12 +123,27 @@ impl ColourScale {
         }
     }
 
-    /// Tick positions for a colour bar with room for about `max_ticks`.
-    fn ticks(&self, max_ticks: usize) -> Ticks {
+    /// Tick positions for a colour bar `length` pixels long: every whole
+    /// number on a steps scale; on a log scale 1, 2, 3, 4, 5 of every
+    /// decade when their labels fit (so that "2" or "4" can be read off),
+    /// else 1, 2, 5, else the decades alone.
+    fn ticks(&self, length: f32) -> Ticks {
         let (min, max) = self.effective_range();
         let (min, max) = (f64::from(min), f64::from(max));
-        if self.log {
-            thin(log_ticks(min, max), max_ticks)
+        let max_ticks = (length as usize / 28).max(2);
+        if self.steps {
+            integer_ticks(min, max, usize::MAX)
+        } else if self.log {
+            let per_decade = f64::from(length) / (max / min).log10().max(1e-9);
+            // The closest pairs: 4 and 5 in the first set, 1 and 2 in the second.
+            let fits = |ratio: f64| per_decade * ratio.log10() >= f64::from(TICK_GAP);
+            if fits(5.0 / 4.0) {
+                log_ticks_at(min, max, &[1.0, 2.0, 3.0, 4.0, 5.0])
+            } else if fits(2.0) {
+                log_ticks_at(min, max, &[1.0, 2.0, 5.0])
+            } else {
+                thin(log_ticks(min, max), max_ticks)
+            }
         } else if min.fract() == 0.0 && max.fract() == 0.0 {
             // Whole-number ends usually mean counts: keep ticks whole.
             integer_ticks(min, max, max_ticks)
@@ -121,8 +177,7 @@ pub fn heatmap_image(
     let (out_w, out_h) = (width as u32 * scale, height as u32 * scale);
     RgbImage::from_fn(out_w, out_h, |x, y| {
         let (column, row) = ((x / scale) as usize, (y / scale) as usize);
-        let t = colour_scale.normalise(values[row * width + column]);
-        image::Rgb(colormap.sample(t))
+        image::Rgb(colour_scale.colour(values[row * width + column], colormap))
     })
 }
 
@@ -256,7 +311,7 @@ impl HeatmapFigure<'_> {
     /// Sizes and positions of every part, worked out before drawing so that
     /// the canvas can be made exactly big enough.
     fn layout(&self, image_w: u32, image_h: u32) -> HeatmapLayout {
-        let ticks = self.colour_scale.ticks((image_h as usize / 28).max(2));
+        let ticks = self.colour_scale.ticks(image_h as f32);
         let widest_tick = ticks
             .labels
             .iter()
@@ -293,24 +348,46 @@ impl HeatmapFigure<'_> {
     }
 
     /// A strip of the colormap, high values at the top, with ticks, their
-    /// labels and the rotated bar label to its right.
+    /// labels and the rotated bar label to its right. On a steps scale the
+    /// strip is a stack of blocks, one per number, each labelled at its
+    /// middle: a legend.
     fn draw_colour_bar(&self, canvas: &mut Canvas, layout: &HeatmapLayout) {
         let (x, top, h) = (layout.bar_x, layout.top, layout.image_h);
+        let scale = self.colour_scale;
+        let count = scale.step_count() as f32;
         // One row at a time: row 0 is the top (t = 1), the last row t = 0.
         let last = h.saturating_sub(1).max(1) as f32;
         for row in 0..h {
             let t = 1.0 - row as f32 / last;
-            let colour = self.colormap.sample(t);
+            let colour = if scale.steps {
+                let from_bottom = (h - 1 - row) as f32 * count / h as f32;
+                scale.colour(scale.min + from_bottom.floor(), self.colormap)
+            } else {
+                self.colormap.sample(t)
+            };
             canvas.fill_rect(x as f32, (top + row) as f32, BAR_WIDTH as f32, 1.0, colour);
+        }
+        if scale.steps {
+            // A white line between blocks, so that pale neighbours stay apart.
+            for step in 1..scale.step_count() {
+                let y = top as f32 + h as f32 * (1.0 - step as f32 / count);
+                canvas.fill_rect(x as f32, y.round() - 0.5, BAR_WIDTH as f32, 1.0, WHITE);
+            }
         }
         outline(canvas, x, top, BAR_WIDTH, h);
 
         let bar_right = (x + BAR_WIDTH) as f32;
         let label_x = bar_right + TICK_LENGTH + 4.0;
         for (value, label) in layout.ticks.values.iter().zip(&layout.ticks.labels) {
-            let t = self.colour_scale.normalise(*value as f32);
-            // The centre of the row whose colour is this value's colour.
-            let y = top as f32 + (1.0 - t) * last + 0.5;
+            let y = if scale.steps {
+                // The middle of the value's block.
+                let from_bottom = (*value as f32 - scale.min + 0.5) / count;
+                top as f32 + (1.0 - from_bottom) * h as f32
+            } else {
+                // The centre of the row whose colour is this value's colour.
+                let t = scale.normalise(*value as f32);
+                top as f32 + (1.0 - t) * last + 0.5
+            };
             canvas.stroke_line(bar_right, y, bar_right + TICK_LENGTH, y, TEXT, 1.0);
             canvas.text(label_x, y, label, TICK_SIZE, TEXT, Anchor::MIDDLE_LEFT);
         }
@@ -460,15 +537,54 @@ mod tests {
 
     #[test]
     fn colour_bar_ticks_are_integers_for_counts_and_decades_for_log() {
-        let counts = ColourScale::linear(1.0, 10.0).ticks(17);
+        let counts = ColourScale::linear(1.0, 10.0).ticks(480.0);
         assert_eq!(
             counts.labels,
             ["1", "2", "3", "4", "5", "6", "7", "8", "9", "10"]
         );
-        let log = ColourScale::log(1.0, 1000.0).ticks(17);
+        // 120 px for three decades: too short for 1, 2, 5 in each.
+        let log = ColourScale::log(1.0, 1000.0).ticks(120.0);
         assert_eq!(log.labels, ["1", "10", "100", "1000"]);
-        let fractions = ColourScale::linear(0.0, 0.5).ticks(8);
+        let fractions = ColourScale::linear(0.0, 0.5).ticks(230.0);
         assert_eq!(fractions.labels.first().map(String::as_str), Some("0.0"));
+    }
+
+    #[test]
+    fn a_tall_log_colour_bar_labels_two_three_four_and_five() {
+        // 600 px over three decades: 4 and 5 are 19 px apart, room enough.
+        let tall = ColourScale::log(1.0, 1000.0).ticks(600.0);
+        assert_eq!(&tall.labels[..6], ["1", "2", "3", "4", "5", "10"]);
+        assert_eq!(tall.labels.last().map(String::as_str), Some("1000"));
+        // 300 px: 4 and 5 would be 10 px apart, so only 1, 2 and 5.
+        let short = ColourScale::log(1.0, 1000.0).ticks(300.0);
+        assert_eq!(&short.labels[..4], ["1", "2", "5", "10"]);
+    }
+
+    #[test]
+    fn a_steps_scale_gives_each_whole_number_its_own_colour_and_legend_entry() {
+        let depth = ColourScale::steps(1, 10);
+        assert_eq!(depth.colour(1.0, Colormap::Distinct), [222, 222, 222]);
+        assert_eq!(depth.colour(2.0, Colormap::Distinct), [31, 119, 180]);
+        assert_eq!(depth.colour(10.0, Colormap::Distinct), [30, 30, 30]);
+        assert_eq!(depth.colour(12.0, Colormap::Distinct), [30, 30, 30]);
+        assert_eq!(depth.ticks(60.0).labels.len(), 10, "one entry per depth");
+        // Drawn: the bar's bottom block is depth 1, its top block depth 10,
+        // and the block in the middle of the bar's lower half is depth 3.
+        let values: Vec<f32> = (0..100).map(|i| (1 + i % 10) as f32).collect();
+        let mut fig = figure(&values);
+        (fig.width, fig.height, fig.pixel_scale) = (10, 10, Some(20));
+        fig.colour_scale = depth;
+        fig.colormap = Colormap::Distinct;
+        let image = fig.render();
+        let layout = fig.layout(200, 200);
+        let x = layout.bar_x + BAR_WIDTH / 2;
+        let block = |depth: u32| image.get_pixel(x, layout.top + 200 - 20 * depth + 10).0;
+        assert_eq!(block(1), [222, 222, 222]);
+        assert_eq!(block(3), [255, 127, 14]);
+        assert_eq!(block(10), [30, 30, 30]);
+        // And the grid's second cell is depth 2's blue.
+        let cell = image.get_pixel(layout.image_x + 30, layout.top + 10).0;
+        assert_eq!(cell, [31, 119, 180]);
     }
 
     #[test]

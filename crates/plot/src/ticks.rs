@@ -91,9 +91,24 @@ pub fn log_ticks(min: f64, max: f64) -> Ticks {
         return Ticks { values, labels };
     }
     // Less than a decade: use 1, 2 and 5 of each decade instead.
+    log_ticks_at(min, max, &[1.0, 2.0, 5.0])
+}
+
+/// Ticks for a log axis over `[min, max]` (both positive) at the given
+/// `multiples` of every power of ten, e.g. `[1, 2, 3, 4, 5]` gives 1, 2, 3,
+/// 4, 5, 10, 20, 30, 40, 50, 100 …: for a scale whose small values must be
+/// read off one by one, where the decades alone say only "about".
+pub fn log_ticks_at(min: f64, max: f64, multiples: &[f64]) -> Ticks {
+    if !(min > 0.0 && max >= min && max.is_finite()) {
+        return Ticks {
+            values: Vec::new(),
+            labels: Vec::new(),
+        };
+    }
+    let slack = 1e-9;
     let mut values = Vec::new();
     for exponent in (min.log10().floor() as i32)..=(max.log10().ceil() as i32) {
-        for multiple in [1.0, 2.0, 5.0] {
+        for multiple in multiples {
             let value = multiple * 10f64.powi(exponent);
             if value >= min * (1.0 - slack) && value <= max * (1.0 + slack) {
                 values.push(value);
@@ -216,6 +231,17 @@ mod tests {
         );
         // Less than a decade: 1-2-5 within it.
         assert_eq!(log_ticks(2.0, 9.0).labels, ["2", "5"]);
+    }
+
+    #[test]
+    fn log_ticks_at_two_three_four_five_label_each_small_count() {
+        let ticks = log_ticks_at(1.0, 120.0, &[1.0, 2.0, 3.0, 4.0, 5.0]);
+        assert_eq!(
+            ticks.labels,
+            ["1", "2", "3", "4", "5", "10", "20", "30", "40", "50", "100"]
+        );
+        assert_eq!(ticks.values[3], 4.0);
+        assert_eq!(log_ticks_at(0.0, 10.0, &[1.0]).values, Vec::<f64>::new());
     }
 
     #[test]

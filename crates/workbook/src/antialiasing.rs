@@ -287,32 +287,93 @@ fn error_markdown(points: &[ErrorPoint], size: Size) -> String {
     text
 }
 
+/// Which window's error a panel shows, read off a measured point.
+type WindowError = fn(&ErrorPoint) -> f64;
+
+/// The error plot: two panels, the edge window above the horizon window,
+/// each with its own floor (a jittered reference-sized image against the
+/// reference), since the two windows tell different stories.
 fn error_plot(points: &[ErrorPoint], size: Size) -> RgbImage {
+    let floor = points.iter().find(|p| p.name == "jittered reference check");
+    let panels: [(&str, WindowError); 2] = [
+        ("The edge: the top of the red ball against the sky", |p| {
+            p.edge
+        }),
+        (
+            "The horizon: the checkerboard where it meets the sky",
+            |p| p.horizon,
+        ),
+    ];
+    let (panel_w, panel_h, title_h) = (820u32, 440u32, 44u32);
+    let mut canvas = Canvas::new(panel_w, title_h + 2 * panel_h, WHITE);
+    canvas.text(
+        panel_w as f32 / 2.0,
+        14.0,
+        &format!(
+            "Error against a {REFERENCE_SPP}-ray grid in two windows of the {}×{} image",
+            size.width, size.height
+        ),
+        20.0,
+        TEXT,
+        Anchor::TOP_CENTRE,
+    );
+    for (k, (title, error)) in panels.into_iter().enumerate() {
+        // One legend, in the upper panel: the colours are the same below.
+        let panel = error_panel(
+            points,
+            title,
+            error,
+            floor.map(error),
+            (panel_w, panel_h),
+            k == 0,
+        );
+        canvas.draw_rgb_image(&panel, 0, (title_h + k as u32 * panel_h) as i32, 1);
+    }
+    canvas.to_rgb_image()
+}
+
+/// One window's error per pattern against N, with the 1/√N and 1/N slopes
+/// from the grid's one-ray error, the reference's floor as a dashed line,
+/// and the lab's five ringed so that its single point is found.
+fn error_panel(
+    points: &[ErrorPoint],
+    title: &str,
+    error: WindowError,
+    floor: Option<f64>,
+    (width, height): (u32, u32),
+    legend: bool,
+) -> RgbImage {
+    const LOWEST: f64 = 0.1;
     let series_of = |name: &str| -> Vec<(f64, f64)> {
         points
             .iter()
             .filter(|p| p.name == name)
-            .map(|p| (f64::from(p.spp), p.both.max(1e-3)))
+            .map(|p| (f64::from(p.spp), error(p).max(LOWEST)))
             .collect()
     };
-    // The guides start where one ray per pixel does.
+    // The guides start where one ray per pixel does, and stop at the
+    // bottom of the axis rather than lie flat along it.
     let start = series_of("grid")[0].1;
     let guide = |power: f64| {
         COUNTS
             .iter()
             .map(move |&n| (f64::from(n), start / f64::from(n).powf(power)))
+            .filter(|&(_, y)| y >= LOWEST)
             .collect::<Vec<_>>()
     };
-    let mut plot = LinePlot::new(format!(
-        "Error against a {REFERENCE_SPP}-ray grid, edge and horizon windows of the {}×{} image",
-        size.width, size.height
-    ))
-    .x_label("rays per pixel N (log scale)")
-    .y_label("RMSE, 8-bit levels")
-    .log_x()
-    .x_range(1.0, 1e4)
-    .log_y(1e-2)
-    .legend(Corner::BottomLeft);
+    let last = f64::from(COUNTS[COUNTS.len() - 1]);
+    let mut plot = LinePlot::new(title)
+        .x_label("rays per pixel N (log scale)")
+        .y_label("RMSE, 8-bit levels")
+        .log_x()
+        .x_range(1.0, last)
+        .log_y(LOWEST)
+        .y_range(LOWEST, 100.0);
+    plot = if legend {
+        plot.legend(Corner::TopRight)
+    } else {
+        plot.no_legend()
+    };
     for (k, pattern) in Pattern::ALL.iter().enumerate() {
         plot = plot.series(Series::new(
             pattern.name(),
@@ -320,15 +381,40 @@ fn error_plot(points: &[ErrorPoint], size: Size) -> RgbImage {
             series_of(pattern.name()),
         ));
     }
+    let lab = series_of("lab five");
     plot = plot
-        .series(Series::new(
-            "lab's five",
-            series_colour(4),
-            series_of("lab five"),
-        ))
+        .series(Series::new("the lab's five", series_colour(4), lab.clone()))
         .series(Series::new("1/√N", GRID_GUIDE, guide(0.5)).without_markers())
         .series(Series::new("1/N", GRID_GUIDE_DARK, guide(1.0)).without_markers());
-    plot.render(820, 520)
+    let mut canvas = plot.render_canvas(width, height);
+    if let Some(floor) = floor {
+        let from = plot.data_to_pixel(width, height, 1.0, floor);
+        let to = plot.data_to_pixel(width, height, last, floor);
+        canvas.dashed_line(from, to, TEXT_MUTED, 1.5, 6.0, 4.0);
+        // Under the line at its left end, where no series runs: they all
+        // start far above the floor.
+        canvas.text(
+            from.0 + 8.0,
+            from.1 + 5.0,
+            &format!("floor: a jittered {REFERENCE_SPP}-ray image is {floor:.2} off"),
+            13.0,
+            TEXT_MUTED,
+            Anchor::TOP_LEFT,
+        );
+    }
+    if let Some(&(n, e)) = lab.first() {
+        let at = plot.data_to_pixel(width, height, n, e);
+        canvas.circle(at, 9.0, None, Some((series_colour(4), 2.0)));
+        canvas.text(
+            at.0 + 12.0,
+            at.1 - 10.0,
+            "the lab's five",
+            13.0,
+            series_colour(4),
+            Anchor::BASELINE_LEFT,
+        );
+    }
+    canvas.to_rgb_image()
 }
 
 const GRID_GUIDE: [u8; 3] = [170, 170, 170];

@@ -39,15 +39,60 @@ fn render_srgb<S: Step>(step: &S, settings: &Settings) -> RgbImage {
     render(&scene, &camera, step, settings, Keep::IMAGE, &NoProgress).srgb
 }
 
-/// The same region on the horizon, right of the red sphere, where the
-/// checkerboard shrinks below a pixel: a quarter of the image each way,
-/// magnified three times.
-fn horizon_crop(image: &RgbImage) -> RgbImage {
+/// The region of the crops, in 120ths of the image's width and height
+/// `(left, top, width, height)`: open ground from just above the horizon
+/// down, right of the glass ball (which reaches the horizon further left),
+/// where the checker squares shrink from a few pixels to far below one.
+const HORIZON_CROP: (u32, u32, u32, u32) = (105, 38, 15, 14);
+
+/// How many times the crops are magnified.
+const HORIZON_ZOOM: u32 = 4;
+
+/// The horizon region of `image`, magnified [`HORIZON_ZOOM`] times, with
+/// a line under it that says which pixels it shows, at what zoom and with
+/// how many rays: the three crops step through one place.
+fn horizon_crop(image: &RgbImage, spp: u32) -> RgbImage {
     let (w, h) = image.dimensions();
-    let (x, y) = (w * 56 / 100, h * 27 / 100);
-    let crop = image::imageops::crop_imm(image, x, y, (w / 4).max(1), (h / 4).max(1)).to_image();
-    let (cw, ch) = crop.dimensions();
-    image::imageops::resize(&crop, cw * 3, ch * 3, image::imageops::FilterType::Nearest)
+    let (fx, fy, fw, fh) = HORIZON_CROP;
+    let (x, y) = (w * fx / 120, h * fy / 120);
+    let (cw, ch) = (
+        (w * fw / 120).clamp(1, w - x),
+        (h * fh / 120).clamp(1, h - y),
+    );
+    let crop = image::imageops::crop_imm(image, x, y, cw, ch).to_image();
+    let zoomed = image::imageops::resize(
+        &crop,
+        cw * HORIZON_ZOOM,
+        ch * HORIZON_ZOOM,
+        image::imageops::FilterType::Nearest,
+    );
+    let strip = 48;
+    let mut canvas = Canvas::new(zoomed.width(), zoomed.height() + strip, WHITE);
+    canvas.draw_rgb_image(&zoomed, 0, 0, 1);
+    let rays = if spp == 1 {
+        "1 ray".to_owned()
+    } else {
+        format!("{spp} rays")
+    };
+    let lines = [
+        format!("{rays} per pixel, magnified {HORIZON_ZOOM}×:"),
+        format!(
+            "pixels {x}–{} × {y}–{} of the {w}×{h} render",
+            x + cw - 1,
+            y + ch - 1
+        ),
+    ];
+    for (k, line) in lines.iter().enumerate() {
+        canvas.text(
+            6.0,
+            zoomed.height() as f32 + 6.0 + 20.0 * k as f32,
+            line,
+            14.0,
+            TEXT,
+            Anchor::TOP_LEFT,
+        );
+    }
+    canvas.to_rgb_image()
 }
 
 /// Write every extra figure into `dir`.
@@ -59,9 +104,9 @@ pub fn make_extras(dir: &Path, size: Size) -> Result<Vec<PathBuf>, JobError> {
         render_srgb(&shadows, &settings(size, 1, 1, 0.0)),
         render_srgb(&refraction, &settings(size, 2, 1, 1e-4)),
         render_srgb(&refraction, &settings(size, 3, 1, 1e-4)),
-        horizon_crop(&render_srgb(&refraction, &settings(size, 10, 1, 1e-4))),
-        horizon_crop(&render_srgb(&refraction, &settings(size, 10, 5, 1e-4))),
-        horizon_crop(&render_srgb(&refraction, &settings(size, 10, 16, 1e-4))),
+        horizon_crop(&render_srgb(&refraction, &settings(size, 10, 1, 1e-4)), 1),
+        horizon_crop(&render_srgb(&refraction, &settings(size, 10, 5, 1e-4)), 5),
+        horizon_crop(&render_srgb(&refraction, &settings(size, 10, 16, 1e-4)), 16),
         shadow_offset_diagram(),
         five_samples_diagram(),
     ];

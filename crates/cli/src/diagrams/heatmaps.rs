@@ -34,9 +34,16 @@ pub fn depth_figure(binary: &str, rendered: &Rendered, maps: &PixelMaps) -> RgbI
         values: &values,
         width: rendered.settings.width as usize,
         height: rendered.settings.height as usize,
-        colour_scale: ColourScale::linear(1.0, max_depth.max(2) as f32),
+        // One colour per depth, one legend entry each: on a smooth bar
+        // depths 1, 2 and 3 would be three near-identical shades. Past ten
+        // depths the distinct colours run out, and viridis steps take over.
+        colour_scale: ColourScale::steps(1, max_depth.max(2)),
         colour_bar_label: "depth of the deepest ray",
-        colormap: Colormap::Viridis,
+        colormap: if max_depth <= 10 {
+            Colormap::Distinct
+        } else {
+            Colormap::Viridis
+        },
         pixel_scale: Some(1),
     }
     .render()

@@ -138,6 +138,21 @@ impl DepthSweep {
             .changes
             .iter()
             .map(|c| (f64::from(c.depth), c.changed_over_3 as f64));
+        let largest = self
+            .changes
+            .iter()
+            .map(|c| (f64::from(c.depth), f64::from(c.max_change)));
+        // The settle criterion itself, in levels of 255, on its own axis:
+        // the picture has settled where this drops to 1 and stays there.
+        let right = LinePlot::new("")
+            .y_label("largest change, levels of 255")
+            .log_y(1.0)
+            .y_range(1.0, 255.0)
+            .series(Series::new(
+                "largest change of any pixel (right axis)",
+                SERIES[3],
+                largest,
+            ));
         let last = self.images.len() as f64;
         let mut plot = LinePlot::new(format!(
             "{binary}: pixels that change when the max depth grows by one"
@@ -153,6 +168,7 @@ impl DepthSweep {
             SERIES[1],
             over_3,
         ))
+        .right_axis(right)
         .legend(Corner::TopRight);
         if settles < self.images.len() as u32 {
             plot = plot.vertical_marker(
