@@ -157,6 +157,26 @@ impl Record {
         shadows: &ShadowLog,
         objects: &impl SceneQuery,
     ) -> Option<u32> {
+        // A render keeps neither: one test, and the loop goes on.
+        if self.by_depth.is_none() && self.log.is_none() {
+            return None;
+        }
+        self.keep(pending, hit, added, max_depth, shadows, objects)
+    }
+
+    /// [`Record::add`] for a tracer that keeps the per-depth colours or a
+    /// probe's log: out of the trace loop's way.
+    #[cold]
+    #[inline(never)]
+    fn keep(
+        &mut self,
+        pending: &PendingRay,
+        hit: Option<&Hit>,
+        added: Vec3,
+        max_depth: u32,
+        shadows: &ShadowLog,
+        objects: &impl SceneQuery,
+    ) -> Option<u32> {
         if let Some(by_depth) = &mut self.by_depth {
             for colour in &mut by_depth[pending.depth as usize..=max_depth as usize] {
                 *colour += added;
