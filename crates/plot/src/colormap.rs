@@ -7,7 +7,7 @@
 //! come from matplotlib (see `colormap_tables.rs` for source and licence).
 
 use super::colormap_tables::{MAGMA, VIRIDIS};
-use super::colour::Rgb;
+use super::colour::{Rgb, SERIES};
 
 /// Which colormap a figure uses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -55,18 +55,19 @@ impl Colormap {
     }
 }
 
-/// The entries of [`Colormap::Distinct`].
+/// The entries of [`Colormap::Distinct`]: pale grey, the first seven
+/// series colours (tab10's blue to pink), tab10's olive, and near-black.
 const DISTINCT: [Rgb; 10] = [
-    [222, 222, 222], // pale grey
-    [31, 119, 180],  // blue
-    [255, 127, 14],  // orange
-    [44, 160, 44],   // green
-    [214, 39, 40],   // red
-    [148, 103, 189], // purple
-    [140, 86, 75],   // brown
-    [227, 119, 194], // pink
-    [188, 189, 34],  // olive
-    [30, 30, 30],    // near-black
+    [222, 222, 222],
+    SERIES[0],
+    SERIES[1],
+    SERIES[2],
+    SERIES[3],
+    SERIES[4],
+    SERIES[5],
+    SERIES[6],
+    [188, 189, 34],
+    [30, 30, 30],
 ];
 
 /// matplotlib's viridis at `t` in `[0, 1]` (clamped; NaN gives the low end).
