@@ -66,6 +66,7 @@ vec3 local_light(Hit hit) {
     return albedo / PI * irradiance + albedo * AMBIENT;
 }
 
+// ANCHOR: trace
 // One camera ray's colour: the lab model's ray-stack loop.
 vec3 trace(Ray primary) {
     vec3 colour = vec3(0.0);
@@ -110,6 +111,7 @@ vec3 trace(Ray primary) {
     }
     return colour;
 }
+// ANCHOR_END: trace
 
 // The lab model's encoding of one linear channel: clamp, the sRGB curve, and the
 // nearest of 256 levels with halves rounded up (GLSL's round() may go

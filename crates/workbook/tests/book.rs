@@ -274,10 +274,9 @@ fn copy_tree(from: &Path, to: &Path) {
         let path = entry.path();
         if path.is_dir() {
             copy_tree(&path, &to.join(entry.file_name()));
-        } else if path
-            .extension()
-            .is_some_and(|e| e == "rs" || e == "toml" || e == "wgsl")
-        {
+        } else if path.extension().is_some_and(|e| {
+            ["rs", "toml", "wgsl", "frag", "glsl"].contains(&e.to_str().unwrap_or(""))
+        }) {
             std::fs::copy(&path, to.join(entry.file_name())).unwrap();
         }
     }
