@@ -35,13 +35,34 @@ pub(crate) struct Photon {
 /// Photons as four columns of equal length, padded with powerless photons
 /// so that a lookup can read its last run eight at a time.
 #[derive(Clone, Debug, Default)]
-struct PhotonColumns {
-    u: Vec<f32>,
-    v: Vec<f32>,
+pub struct PhotonColumns {
+    /// Where each photon landed, in the ground's own two axes.
+    pub u: Vec<f32>,
+    pub v: Vec<f32>,
     /// The power every channel carries: mirrors and the lab's glass do not
     /// tint the sunlight, so one number per photon.
-    power: Vec<f32>,
-    bounces: Vec<f32>,
+    pub power: Vec<f32>,
+    /// Its mirror and glass bounces (a whole number).
+    pub bounces: Vec<f32>,
+}
+
+/// Photons `i .. i + 8` of `column` (one of [`PhotonColumns`]'s).
+#[inline]
+pub fn eight(column: &[f32], i: usize) -> [f32; 8] {
+    column[i..i + 8]
+        .try_into()
+        .expect("the columns are padded to a multiple of eight")
+}
+
+/// What a lookup at a ground point reads ([`CausticMap::near`]).
+pub struct Near<'m> {
+    /// The point in the ground's own axes.
+    pub u: f32,
+    pub v: f32,
+    /// The photons of each row of the 3 × 3 cells around it, as indices
+    /// into the columns (a run's last group of eight may reach past it).
+    pub runs: [std::ops::Range<usize>; 3],
+    pub photons: &'m PhotonColumns,
 }
 
 /// The photons on the ground, bucketed in a grid of cells one kernel
@@ -144,39 +165,34 @@ impl CausticMap {
         if max_bounces == 0 {
             return Vec3::ZERO;
         }
-        let local = p - self.origin;
-        let (u, v) = (local.dot(self.axis_u), local.dot(self.axis_v));
-        let h = KERNEL_RADIUS;
-        let cx = ((u + EXTENT) / h).floor() as i64;
-        let cy = ((v + EXTENT) / h).floor() as i64;
-        let last = self.cells as i64 - 1;
+        let Some(near) = self.near(p) else {
+            return Vec3::ZERO; // beside the grid: no photon is that far out
+        };
+        let (u, v, h) = (near.u, near.v, KERNEL_RADIUS);
         // A bright caustic holds thousands of photons in a few cells, and
         // every path that lands near it reads them all. They are added as
         // eight partial sums (the k-th photon of each group of eight adds
         // to sum k) and the eight are added pairwise at the end, as the
         // eight lanes of an AVX register add them. Floating-point addition
         // is not associative: the order is the one the caustic images were
-        // made with, so it is part of them, and the compiler can keep the
-        // eight sums in one register.
+        // made with, so it is part of them. Written this way (each group
+        // read as eight-number arrays, the three conditions joined with `&`,
+        // which evaluates all three, not `&&`, which branches) the compiler
+        // keeps the eight sums in one register and tests several photons
+        // at once.
         let most = max_bounces as f32;
         let mut sums = [0.0f32; 8];
-        let (x0, x1) = ((cx - 1).max(0), (cx + 1).min(last));
-        if x0 > x1 {
-            return Vec3::ZERO; // beside the grid: no photon is that far out
-        }
         let photons = &self.photons;
-        for y in (cy - 1).max(0)..=(cy + 1).min(last) {
-            let row = (y * self.cells as i64) as usize;
-            let start = self.cell_start[row + x0 as usize] as usize;
-            let end = self.cell_start[row + x1 as usize + 1] as usize;
-            for i in (start..end).step_by(8) {
-                let (pu, pv) = (&photons.u[i..i + 8], &photons.v[i..i + 8]);
-                let (bounces, power) = (&photons.bounces[i..i + 8], &photons.power[i..i + 8]);
+        for run in near.runs {
+            for i in run.clone().step_by(8) {
+                let (pu, pv) = (eight(&photons.u, i), eight(&photons.v, i));
+                let (bounces, power) = (eight(&photons.bounces, i), eight(&photons.power, i));
+                // Past the run's end are the next cells' photons: not these.
+                let in_run = (run.end - i).min(8) as u32;
                 for (k, sum) in sums.iter_mut().enumerate() {
                     let (du, dv) = (pu[k] - u, pv[k] - v);
                     let d2 = du * du + dv * dv;
-                    // Past `end` are the next cells' photons: out of this run.
-                    let counts = d2 < h * h && bounces[k] <= most && i + k < end;
+                    let counts = (d2 < h * h) & (bounces[k] <= most) & ((k as u32) < in_run);
                     let kernel = 1.0 - d2 / (h * h);
                     *sum += if counts { power[k] * kernel } else { 0.0 };
                 }
@@ -187,6 +203,37 @@ impl CausticMap {
         Vec3::splat(sum * (2.0 / (std::f32::consts::PI * h * h)))
     }
     // ANCHOR_END: density
+
+    /// Where a lookup at ground point `p` reads: `p` in the ground's own
+    /// axes, and the photons of the 3 × 3 cells around it, one run of the
+    /// columns per row of cells. `None` beside the grid.
+    pub fn near(&self, p: Vec3) -> Option<Near<'_>> {
+        let local = p - self.origin;
+        let (u, v) = (local.dot(self.axis_u), local.dot(self.axis_v));
+        let h = KERNEL_RADIUS;
+        let cx = ((u + EXTENT) / h).floor() as i64;
+        let cy = ((v + EXTENT) / h).floor() as i64;
+        let last = self.cells as i64 - 1;
+        let (x0, x1) = ((cx - 1).max(0), (cx + 1).min(last));
+        if x0 > x1 {
+            return None;
+        }
+        // Rows of cells outside the grid read nothing (an empty run).
+        let runs = [cy - 1, cy, cy + 1].map(|y| {
+            if !(0..=last).contains(&y) {
+                return 0..0;
+            }
+            let row = (y * self.cells as i64) as usize;
+            let start = self.cell_start[row + x0 as usize] as usize;
+            start..self.cell_start[row + x1 as usize + 1] as usize
+        });
+        Some(Near {
+            u,
+            v,
+            runs,
+            photons: &self.photons,
+        })
+    }
 }
 
 /// Merge the photons of each bin (see [`BINS_PER_CELL`]) into one, with

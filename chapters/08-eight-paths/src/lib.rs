@@ -9,7 +9,8 @@
 //! throughputs and the terms. Only what is rare, or the learner's, is done
 //! lane by lane: the choice of lobe where a material has one (the
 //! learner's `choose_lobe`), the disc sun's sample (`--sun-size`) and the
-//! caustic lookup (`--caustics`).
+//! caustic lookup (`--caustics`, which scans its photons eight at a time
+//! instead).
 //!
 //! The bytes are the scalar tracer's because each lane does the scalar
 //! code's operations in its order (the workspace builds without FMA), and
@@ -19,6 +20,7 @@
 //! sample order before they are summed.
 //!
 //! - [`paths`]: eight paths in flight, and one bounce of all of them;
+//! - [`density`]: the caustic lookup, eight photons at a time;
 //! - [`starts`]: the row's next samples, made ready eight at a time;
 //! - [`terms`]: the five terms of eight paths;
 //! - [`window`]: finished samples put back in order;
@@ -31,6 +33,7 @@
 //! `--objects tree` ([`Objects`]), which finds every hit through chapter
 //! 9's tree ([`render_tree_paths`]).
 
+pub mod density;
 pub mod lane_use;
 pub mod paths;
 pub mod render;

@@ -25,6 +25,7 @@ use raylab_lanes::{
 };
 use wide::{CmpGt, CmpLe, CmpLt, CmpNe, f32x8};
 
+use crate::density::irradiance_x8;
 use crate::lane_use::{LaneUse, Stage};
 use crate::terms::TermsX8;
 
@@ -281,7 +282,8 @@ impl Paths {
     }
 
     /// The caustic light the photons left at the ground points of `ground`
-    /// (looked up per lane: a scan of the photons near each point).
+    /// (looked up per lane: a scan of the photons near each point, eight
+    /// photons at a time).
     fn caustics(
         &mut self,
         tracer: &PathTracer<'_, impl SceneQuery + ?Sized>,
@@ -299,7 +301,7 @@ impl Paths {
         let mut irradiance = [Vec3::ZERO; LANES];
         for lane in lanes_of(bits) {
             let left = tracer.max_depth - hits[lane] as u32;
-            irradiance[lane] = map.irradiance(points[lane], left);
+            irradiance[lane] = irradiance_x8(map, points[lane], left);
         }
         let light = (self.throughput * s.albedo * FRAC_1_PI) * Vec3x8::from_lanes(irradiance);
         self.terms.add_caustics(ground, light);
