@@ -84,15 +84,15 @@ fn field_colour(field: usize) -> Rgb {
 
 fn soa_figure() -> RgbImage {
     let mut sheet = Sheet::new(
-        1000.0,
-        450.0,
+        1200.0,
+        510.0,
         "Eight rays as eight records, and as eight registers",
     );
-    let (cell_w, cell_h) = (42.0, 28.0);
-    let top = 110.0;
+    let (cell_w, cell_h) = (48.0, 34.0);
+    let top = 120.0;
     let grids = [
-        (40.0, "array of structures: one record per ray", false),
-        (560.0, "structure of arrays: one register per number", true),
+        (90.0, "array of structures: one record per ray", false),
+        (706.0, "structure of arrays: one register per number", true),
     ];
     for (left, title, registers) in grids {
         sheet.text(
@@ -113,7 +113,7 @@ fn soa_figure() -> RgbImage {
                 sheet.text(
                     (at.0 + cell_w / 2.0, at.1 + cell_h / 2.0),
                     &format!("{}{ray}", FIELDS[field]),
-                    SMALL - 1.5,
+                    SMALL,
                     TEXT,
                     Anchor::MIDDLE_CENTRE,
                 );
@@ -131,7 +131,7 @@ fn soa_figure() -> RgbImage {
             sheet.text(
                 (x, top + (row as f32 + 0.5) * cell_h),
                 &name,
-                SMALL - 1.5,
+                SMALL,
                 TEXT_MUTED,
                 anchor,
             );
@@ -149,7 +149,7 @@ fn soa_figure() -> RgbImage {
             Anchor::TOP_CENTRE,
         );
     }
-    let mid = (40.0 + 8.0 * cell_w + 560.0) / 2.0;
+    let mid = (grids[0].0 + 8.0 * cell_w + grids[1].0) / 2.0;
     sheet.arrow(
         (mid - 70.0, top + 2.5 * cell_h),
         (mid + 70.0, top + 2.5 * cell_h),
@@ -308,16 +308,16 @@ fn row_figure(waves: &[Vec<WaveRay>], size: Size) -> RgbImage {
     let j = glass_row(size.width, size.height);
     let width = size.width as f32;
     let mut sheet = Sheet::new(
-        1060.0,
-        110.0 + 58.0 * waves.len().max(3) as f32 + 140.0,
+        1200.0,
+        110.0 + 64.0 * waves.len().max(3) as f32 + 150.0,
         &format!(
             "Row {j} of chapter 4's {}×{} render in waves: the rays sent on, packed",
             size.width, size.height
         ),
     );
-    let (left, lane_w) = (150.0, 880.0 / width);
-    let strip_h = 22.0;
-    let row_y = |k: usize| 100.0 + 58.0 * k as f32 + if k > 0 { 40.0 } else { 0.0 };
+    let (left, lane_w) = (230.0, 940.0 / width);
+    let strip_h = 26.0;
+    let row_y = |k: usize| 100.0 + 64.0 * k as f32 + if k > 0 { 40.0 } else { 0.0 };
     // Where each ray of wave 2 came from in wave 1, drawn first so that
     // the strips and their labels lie on top.
     if let Some(second) = waves.get(1) {
@@ -333,22 +333,24 @@ fn row_figure(waves: &[Vec<WaveRay>], size: Size) -> RgbImage {
     for (k, wave) in waves.iter().enumerate() {
         let y = row_y(k);
         sheet.text(
-            (left - 12.0, y + strip_h / 2.0 - 7.0),
+            (left - 12.0, y + strip_h / 2.0 - 10.0),
             &format!("wave {}", k + 1),
             LABEL,
             TEXT,
             Anchor::MIDDLE_RIGHT,
         );
         sheet.text(
-            (left - 12.0, y + strip_h / 2.0 + 9.0),
+            (left - 12.0, y + strip_h / 2.0 + 12.0),
             &format!("{} rays, {} groups", wave.len(), wave.len().div_ceil(LANES)),
-            SMALL - 1.5,
+            SMALL,
             TEXT_MUTED,
             Anchor::MIDDLE_RIGHT,
         );
         sheet.fill_rect((left, y), (width * lane_w, strip_h), [246, 246, 246]);
-        for (n, ray) in wave.iter().enumerate() {
-            let colour = match (k, ray.kind) {
+        let colours: Vec<Rgb> = wave
+            .iter()
+            .enumerate()
+            .map(|(n, ray)| match (k, ray.kind) {
                 (0, _) => {
                     let sends = waves
                         .get(1)
@@ -356,12 +358,18 @@ fn row_figure(waves: &[Vec<WaveRay>], size: Size) -> RgbImage {
                     if sends { AXIS } else { FRAME }
                 }
                 (_, kind) => kind_colour(kind),
-            };
+            })
+            .collect();
+        // Each run of one colour as one rectangle: rays about a pixel wide,
+        // filled one by one, leave stripes where their soft edges meet.
+        let mut start = 0;
+        for run in colours.chunk_by(|a, b| a == b) {
             sheet.fill_rect(
-                (left + n as f32 * lane_w, y),
-                (lane_w.max(0.6), strip_h),
-                colour,
+                (left + start as f32 * lane_w, y),
+                ((run.len() as f32 * lane_w).max(0.6), strip_h),
+                run[0],
             );
+            start += run.len();
         }
         // Group boundaries, where they can be seen.
         if lane_w * LANES as f32 >= 4.0 {
@@ -376,13 +384,13 @@ fn row_figure(waves: &[Vec<WaveRay>], size: Size) -> RgbImage {
             sheet.text(
                 (x + 3.0, y - 4.0),
                 "inside a sphere →",
-                SMALL - 1.5,
+                SMALL,
                 TEXT,
                 Anchor::new(raylab_plot::HAlign::Left, raylab_plot::VAlign::Bottom),
             );
         }
     }
-    let legend_y = row_y(waves.len().max(3)) - 10.0;
+    let legend_y = row_y(waves.len().max(3)) - 4.0;
     let entries = [
         (AXIS, "a ray that sends rays on"),
         (FRAME, "one that does not"),
@@ -399,7 +407,7 @@ fn row_figure(waves: &[Vec<WaveRay>], size: Size) -> RgbImage {
         .flatten()
         .any(|r| r.kind == RayKind::TotalInternalReflection);
     sheet.legend(
-        (360.0, legend_y),
+        (440.0, legend_y),
         &entries[2..if any_total { 5 } else { 4 }],
     );
     sheet.note(
@@ -538,6 +546,19 @@ fn busy_figure(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::concepts::{WIDEST, shown};
+
+    #[test]
+    fn the_records_and_row_figures_fit_1200_pixels_and_their_type_reads_12_pixels_tall() {
+        let size = Size::DEFAULT;
+        let j = glass_row(size.width, size.height);
+        let row = row_figure(&row_waves(size.width, size.height, j, true), size);
+        for (name, image) in [("soa", soa_figure()), ("row-waves", row)] {
+            assert!(image.width() <= WIDEST, "{name}: {}", image.width());
+            let small = shown(SMALL, image.width());
+            assert!(small >= 12.0, "{name}: small type shown {small} px tall");
+        }
+    }
 
     #[test]
     fn the_sorted_waves_of_a_row_hold_as_many_rays_as_chapter_7_traces() {

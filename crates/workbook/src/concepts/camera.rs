@@ -7,7 +7,7 @@ use raylab::{Camera, Vec3};
 use raylab_plot::colour::{AXIS, FRAME, GRID, TEXT, TEXT_MUTED};
 use raylab_plot::{Anchor, HAlign, VAlign};
 
-use super::{LABEL, P, SMALL, Sheet};
+use super::{LABEL, LINE, P, SMALL, Sheet};
 
 /// The small image the figure divides the plane into, so that its pixels
 /// can be seen: 8 columns, 6 rows (the lab's 4:3).
@@ -45,22 +45,22 @@ pub fn figure() -> RgbImage {
     );
     let fov = fov_degrees(&camera);
     let mut sheet = Sheet::new(
-        1180.0,
-        600.0,
+        1200.0,
+        830.0,
         "The lab camera from the side, and the image plane from the front",
     );
-    // Side view: -z to the right, y up; x (the camera's right) points out
-    // of the page.
-    let (k, left, ground) = (150.0, 70.0, 480.0);
+    // Side view, across the top: -z to the right, y up; x (the camera's
+    // right) points out of the page.
+    let (k, left, ground) = (190.0, 240.0, 540.0);
     let map = |p: Vec3| -> P { (left + (eye.z - p.z) * k, ground - p.y * k) };
     // The ground and the target.
-    sheet.line((20.0, ground), (800.0, ground), AXIS, 2.0);
+    sheet.line((20.0, ground), (1180.0, ground), AXIS, 2.0);
     sheet.text(
-        (790.0, ground + 8.0),
+        (30.0, ground + 8.0),
         "ground, y = 0",
         SMALL,
         TEXT_MUTED,
-        Anchor::TOP_RIGHT,
+        Anchor::TOP_LEFT,
     );
     // The frustum: the rays through the top and bottom edges of the image,
     // as far as the ground or the target's distance.
@@ -74,18 +74,19 @@ pub fn figure() -> RgbImage {
     sheet.dashed(map(eye), map(target), GRID, 1.5);
     sheet.dot(map(target), AXIS);
     sheet.label(
-        (map(target).0, map(target).1 - 10.0),
+        (map(target).0, map(target).1 - 12.0),
         "target (0, 0.6, 0)",
         SMALL,
         TEXT,
         Anchor::BASELINE_CENTRE,
     );
+    // Ending where it meets the line, the label lies wholly above it.
     sheet.label(
-        add_p(map(eye + edge(1.0) * 3.2), (0.0, -8.0)),
+        add_p(map(eye + edge(1.0) * 3.8), (-6.0, -10.0)),
         &format!("top edge of the view: forward + tan({:.1}°)·up", fov / 2.0),
         SMALL,
         TEXT_MUTED,
-        Anchor::BASELINE_CENTRE,
+        Anchor::BASELINE_RIGHT,
     );
 
     // The image plane at distance 1, divided into ROWS rows.
@@ -99,11 +100,11 @@ pub fn figure() -> RgbImage {
         sheet.line(map(p - across), map(p + across), AXIS, 1.5);
     }
     sheet.label(
-        add_p(map(bottom), (0.0, 12.0)),
+        add_p(map(bottom), (-6.0, 12.0)),
         "image plane, distance 1",
         SMALL,
         TEXT,
-        Anchor::TOP_CENTRE,
+        Anchor::TOP_RIGHT,
     );
     // Its half-height, beside it.
     let off = forward * 0.18;
@@ -126,7 +127,7 @@ pub fn figure() -> RgbImage {
     // The eye and its frame.
     sheet.arrow(map(eye), map(centre), BLUE, 2.5);
     sheet.label(
-        add_p(map(eye + forward * 0.5), (0.0, -8.0)),
+        add_p(map(eye + forward * 0.62), (0.0, -6.0)),
         "forward",
         LABEL,
         BLUE,
@@ -134,7 +135,7 @@ pub fn figure() -> RgbImage {
     );
     sheet.arrow(map(eye), map(eye + up * 0.6), GREEN, 2.5);
     sheet.text(
-        add_p(map(eye + up * 0.6), (-6.0, 0.0)),
+        add_p(map(eye + up * 0.6), (-8.0, 0.0)),
         "up",
         LABEL,
         GREEN,
@@ -143,19 +144,19 @@ pub fn figure() -> RgbImage {
     // Right points out of the page: a dot in a circle.
     sheet.circle(map(eye), 9.0, None, Some(TEXT));
     sheet.dot(map(eye), TEXT);
-    sheet.label(
-        add_p(map(eye), (0.0, 16.0)),
+    sheet.text(
+        add_p(map(eye), (-18.0, 0.0)),
         "eye (0, 1.2, 4.5)",
         LABEL,
         TEXT,
-        Anchor::TOP_CENTRE,
+        Anchor::MIDDLE_RIGHT,
     );
     sheet.text(
-        add_p(map(eye), (0.0, 34.0)),
+        add_p(map(eye), (-18.0, LINE)),
         "right: out of the page",
         SMALL,
         TEXT_MUTED,
-        Anchor::TOP_CENTRE,
+        Anchor::MIDDLE_RIGHT,
     );
 
     // Pixel PIXEL's ray, through the plane and on to the ground.
@@ -167,49 +168,64 @@ pub fn figure() -> RgbImage {
     sheet.dot(map(crossing), ORANGE);
     sheet.dot(map(ray.at(t_ground)), ORANGE);
     sheet.label(
-        add_p(map(ray.at(t_ground)), (0.0, -12.0)),
+        add_p(map(ray.at(t_ground)), (0.0, 10.0)),
         &format!(
             "row {}'s ray meets the ground at t = {t_ground:.2}",
             PIXEL.1
         ),
         SMALL,
         ORANGE,
-        Anchor::BASELINE_CENTRE,
+        Anchor::TOP_CENTRE,
     );
     sheet.label(
-        add_p(map(crossing), (-10.0, 0.0)),
+        add_p(map(crossing), (-10.0, 8.0)),
         &format!("y = {y:.4}"),
         SMALL,
         ORANGE,
-        Anchor::MIDDLE_RIGHT,
+        Anchor::TOP_RIGHT,
     );
     sheet.text(
-        add_p(map(eye + edge(0.0) * 0.2), (28.0, -40.0)),
+        add_p(map(eye), (30.0, -50.0)),
         &format!("fov {fov:.0}°"),
         SMALL,
         TEXT_MUTED,
         Anchor::MIDDLE_LEFT,
     );
 
-    front_view(&mut sheet, &camera);
+    front_view(&mut sheet, &camera, ground + 56.0);
     sheet.note(
-        0,
-        "Numbers from Camera::lab(): look_at((0, 1.2, 4.5), (0, 0.6, 0), up = y, fov 45°); \
-         the plane is divided into 8 × 6 pixels to show them.",
+        1,
+        "Numbers from Camera::lab(): look_at((0, 1.2, 4.5), (0, 0.6, 0), up = y, fov 45°);",
     );
+    sheet.note(0, "the plane is divided into 8 × 6 pixels to show them.");
     sheet.finish()
 }
 
-/// The image plane seen from the eye: its pixels, pixel PIXEL's centre,
-/// and the formulas that give its coordinates.
-fn front_view(sheet: &mut Sheet, camera: &Camera) {
+/// The image plane seen from the eye, its top at `top`: its pixels, pixel
+/// PIXEL's centre, and beside it the formulas that give its coordinates.
+fn front_view(sheet: &mut Sheet, camera: &Camera, top: f32) {
     let h = camera.half_height();
     let aspect = COLUMNS as f32 / ROWS as f32;
-    let (cx, cy, k) = (990.0, 190.0, 170.0);
-    let to = |x: f32, y: f32| -> P { (cx + x * k, cy - y * k) };
-    let (w2, h2) = (h * aspect, h);
-    let cell = 2.0 * h2 / ROWS as f32;
     let (i, j) = PIXEL;
+    let (x, y) = on_plane(camera, PIXEL, COLUMNS, ROWS);
+    let lines = [
+        format!("pixel (i, j) = ({i}, {j}), centre at (i + 0.5, j + 0.5):"),
+        format!("x = (2(i + 0.5)/{COLUMNS} − 1)·{h:.4}·{aspect:.3} = {x:.4}"),
+        format!("y = (1 − 2(j + 0.5)/{ROWS})·{h:.4} = {y:.4}"),
+        "d = normalize(forward + x·right + y·up)".to_owned(),
+    ];
+    let k = 180.0;
+    let (w2, h2) = (h * aspect, h);
+    // The plane and the formulas side by side, centred on the sheet.
+    let text_width = lines
+        .iter()
+        .map(|line| sheet.text_width(line, SMALL))
+        .fold(0.0, f32::max);
+    let gap = 50.0;
+    let plane_left = (sheet.width() - (2.0 * w2 * k + gap + text_width)) / 2.0;
+    let (cx, cy) = (plane_left + w2 * k, top + h2 * k);
+    let to = |x: f32, y: f32| -> P { (cx + x * k, cy - y * k) };
+    let cell = 2.0 * h2 / ROWS as f32;
     let (x0, y0) = (-w2 + i as f32 * cell, h2 - j as f32 * cell);
     sheet.fill_rect(to(x0, y0), (cell * k, cell * k), [253, 226, 204]);
     for c in 0..=COLUMNS {
@@ -221,7 +237,6 @@ fn front_view(sheet: &mut Sheet, camera: &Camera) {
         sheet.line(to(-w2, y), to(w2, y), GRID, 1.0);
     }
     sheet.stroke_rect(to(-w2, h2), (2.0 * w2 * k, 2.0 * h2 * k), AXIS, 1.5);
-    let (x, y) = on_plane(camera, PIXEL, COLUMNS, ROWS);
     sheet.dot(to(x, y), ORANGE);
     sheet.arrow(to(0.0, 0.0), to(0.25, 0.0), TEXT, 1.5);
     sheet.text(
@@ -239,22 +254,17 @@ fn front_view(sheet: &mut Sheet, camera: &Camera) {
         TEXT,
         Anchor::BOTTOM_CENTRE,
     );
+    let text_left = plane_left + 2.0 * w2 * k + gap;
     sheet.text(
-        (cx, cy - h2 * k - 12.0),
+        (text_left, top + 8.0),
         &format!("the plane from the eye: {COLUMNS} × {ROWS} pixels"),
         LABEL,
         TEXT,
-        Anchor::BASELINE_CENTRE,
+        Anchor::TOP_LEFT,
     );
-    let lines = [
-        format!("pixel (i, j) = ({i}, {j}), centre at (i + 0.5, j + 0.5):"),
-        format!("x = (2(i + 0.5)/{COLUMNS} − 1)·{h:.4}·{aspect:.3} = {x:.4}"),
-        format!("y = (1 − 2(j + 0.5)/{ROWS})·{h:.4} = {y:.4}"),
-        "d = normalize(forward + x·right + y·up)".to_owned(),
-    ];
     for (n, line) in lines.iter().enumerate() {
         sheet.text(
-            (cx - 150.0, cy + h2 * k + 24.0 + 19.0 * n as f32),
+            (text_left, top + 70.0 + LINE * n as f32),
             line,
             SMALL,
             TEXT,

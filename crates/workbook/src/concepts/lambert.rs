@@ -28,27 +28,26 @@ pub fn figure() -> RgbImage {
         (70.0, "a low sun"),
     ];
     let mut sheet = Sheet::new(
-        1080.0,
-        470.0,
+        1200.0,
+        560.0,
         "Lambert's law: a beam of width w covers w / cos θ, so each unit of surface gets cos θ of it",
     );
-    let w = 64.0;
-    let ground = 330.0;
+    let w = 72.0;
+    let ground = 370.0;
     for (n, &(theta, title)) in angles.iter().enumerate() {
-        let panel = 180.0 + 360.0 * n as f32;
-        sheet.text((panel, 56.0), title, LABEL, TEXT, Anchor::TOP_CENTRE);
-        sheet.fill_rect((panel - 170.0, ground), (340.0, 40.0), [238, 238, 238]);
-        sheet.line((panel - 170.0, ground), (panel + 170.0, ground), AXIS, 2.0);
+        let panel = 200.0 + 400.0 * n as f32;
+        sheet.text((panel, 64.0), title, LABEL, TEXT, Anchor::TOP_CENTRE);
+        sheet.fill_rect((panel - 185.0, ground), (370.0, 58.0), [238, 238, 238]);
+        sheet.line((panel - 185.0, ground), (panel + 185.0, ground), AXIS, 2.0);
         let (s, c) = theta.to_radians().sin_cos();
         // Shorter beams where they slant, and the footprint moved right so
         // that beam and footprint together sit in the middle of the panel.
-        let length = 210.0 - 1.1 * theta;
-        let cx = panel + s * length / 2.0 - 12.0 * s;
+        let length = 231.0 - 1.2 * theta;
+        let cx = panel + s * length / 2.0 - 24.0 * s;
         // Towards the sun, and across the beam.
         let to_sun = (-s, -c);
         let across = (c, -s);
         let foot = w / c;
-        // The beam: parallel rays whose feet are spread along the ground.
         // The beam: parallel rays that start on a line across it, w wide,
         // and run on to the ground.
         let a = along((cx - foot / 2.0, ground), to_sun, length);
@@ -62,7 +61,7 @@ pub fn figure() -> RgbImage {
         let bar_end = along(bar, across, w);
         sheet.line(bar, bar_end, TEXT, 1.5);
         sheet.label(
-            along(along(bar, across, w / 2.0), to_sun, 12.0),
+            along(along(bar, across, w / 2.0), to_sun, 20.0),
             "w",
             LABEL,
             TEXT,
@@ -77,7 +76,7 @@ pub fn figure() -> RgbImage {
         sheet.line((l.0, l.1 - 6.0), (l.0, l.1 + 6.0), FOOT, 2.0);
         sheet.line((r.0, r.1 - 6.0), (r.0, r.1 + 6.0), FOOT, 2.0);
         sheet.text(
-            (panel, ground + 26.0),
+            (panel, ground + 24.0),
             &format!("w / cos θ = {:.2} w", 1.0 / c),
             LABEL,
             FOOT,
@@ -85,31 +84,31 @@ pub fn figure() -> RgbImage {
         );
         // The normal, and the angle.
         let normal_at = (cx + foot / 2.0 + 16.0, ground);
-        sheet.arrow(normal_at, (normal_at.0, ground - 90.0), N, 2.0);
+        sheet.arrow(normal_at, (normal_at.0, ground - 100.0), N, 2.0);
         sheet.text(
-            (normal_at.0 + 4.0, ground - 90.0),
+            (normal_at.0 + 4.0, ground - 100.0),
             "n",
             LABEL,
             N,
             Anchor::TOP_LEFT,
         );
         sheet.text(
-            (panel, ground + 52.0),
-            &format!("θ = {theta:.1}°: E = cos θ × E head-on = {c:.3} E"),
+            (panel, ground + 70.0),
+            &format!("θ = {theta:.1}°: E = {c:.3} × E head-on"),
             LABEL,
             TEXT,
             Anchor::TOP_CENTRE,
         );
     }
     sheet.legend(
-        (40.0, 424.0),
+        (40.0, ground + 120.0),
         &[(
             BEAM,
             "the sun's light, a beam of width w (θ from the normal n)",
         )],
     );
     sheet.legend(
-        (560.0, 424.0),
+        (660.0, ground + 120.0),
         &[(FOOT, "where the same light lands: spread thinner")],
     );
     sheet.note(

@@ -52,24 +52,24 @@ pub fn figure() -> RgbImage {
     let error = rounding_error();
     let danger = danger_angle(EPSILON, error);
     let mut sheet = Sheet::new(
-        1000.0,
-        520.0,
+        1200.0,
+        660.0,
         "The shadow feeler starts at p + ε·L: only ε·cos θ above the surface",
     );
-    let eps = 130.0; // ε, in logical pixels
-    let surface = 340.0;
+    let eps = 156.0; // ε, in pixels
+    let surface = 430.0;
     for (n, theta) in [30.0f32, 80.0].into_iter().enumerate() {
-        let p: P = (200.0 + 500.0 * n as f32, surface);
+        let p: P = (230.0 + 600.0 * n as f32, surface);
         let title = if n == 0 {
             "sun high: θ = 30°"
         } else {
             "near the terminator: θ = 80°"
         };
-        sheet.text((p.0 + 60.0, 56.0), title, LABEL, TEXT, Anchor::TOP_CENTRE);
-        sheet.fill_rect((p.0 - 160.0, surface), (420.0, 70.0), [238, 238, 238]);
-        sheet.line((p.0 - 160.0, surface), (p.0 + 260.0, surface), AXIS, 2.5);
+        sheet.text((p.0 + 80.0, 64.0), title, LABEL, TEXT, Anchor::TOP_CENTRE);
+        sheet.fill_rect((p.0 - 170.0, surface), (500.0, 80.0), [238, 238, 238]);
+        sheet.line((p.0 - 170.0, surface), (p.0 + 330.0, surface), AXIS, 2.5);
         sheet.text(
-            (p.0 - 150.0, surface + 10.0),
+            (p.0 - 160.0, surface + 44.0),
             "inside the object",
             SMALL,
             TEXT_MUTED,
@@ -107,13 +107,13 @@ pub fn figure() -> RgbImage {
             Anchor::new(raylab_plot::HAlign::Right, raylab_plot::VAlign::Bottom),
         );
         sheet.circle(start, 5.0, Some(shadow), None);
-        sheet.label(
-            (start.0 - 8.0, start.1 - 8.0),
-            "p + ε·L",
-            LABEL,
-            TEXT,
-            Anchor::BOTTOM_CENTRE,
-        );
+        // Beside a steep feeler, under it; above a shallow one.
+        let (at, anchor) = if c > 0.5 {
+            ((start.0 + 14.0, start.1 + 4.0), Anchor::MIDDLE_LEFT)
+        } else {
+            ((start.0 - 8.0, start.1 - 8.0), Anchor::BOTTOM_CENTRE)
+        };
+        sheet.label(at, "p + ε·L", LABEL, TEXT, anchor);
         // Its height above the surface.
         sheet.line(start, (start.0, surface), HEIGHT, 2.0);
         // A short bar leaves no room beside it: the label goes under the surface.
@@ -131,16 +131,18 @@ pub fn figure() -> RgbImage {
         sheet.label(at, &format!("ε·cos θ = {c:.2} ε"), LABEL, HEIGHT, anchor);
         sheet.dot(p, TEXT);
         sheet.text((p.0, surface + 8.0), "p", LABEL, TEXT, Anchor::TOP_CENTRE);
+        // The angle, on the line halfway between n and L.
+        let (half_s, half_c) = (theta / 2.0).to_radians().sin_cos();
         sheet.text(
-            (p.0 + 30.0, surface - 34.0),
+            along(p, (half_s, -half_c), 100.0),
             &format!("{theta:.0}°"),
             SMALL,
             TEXT_MUTED,
-            Anchor::MIDDLE_LEFT,
+            Anchor::MIDDLE_CENTRE,
         );
     }
     sheet.legend(
-        (40.0, 430.0),
+        (60.0, surface + 104.0),
         &[
             (shadow, "the feeler ray, as chapter 2's sun_factor casts it"),
             (HEIGHT, "how far its start is above the surface"),

@@ -10,7 +10,7 @@ use raylab_cli::diagrams::kind_colour;
 use raylab_plot::colour::{AXIS, TEXT, TEXT_MUTED, series_colour};
 use raylab_plot::{Anchor, Rgb};
 
-use super::{LABEL, P, SMALL, Sheet, along, degrees};
+use super::{LABEL, LINE, P, SMALL, Sheet, along, degrees};
 
 /// The index of refraction of the lab's glass sphere.
 pub fn glass_ior() -> f32 {
@@ -52,18 +52,18 @@ const R: Rgb = [0, 114, 178];
 const PART: Rgb = [213, 94, 0];
 
 pub fn reflection_figure() -> RgbImage {
-    let mut sheet = Sheet::new(760.0, 520.0, "Reflection: r = d − 2(d·n)n");
-    let (p, k): (P, f32) = ((360.0, 250.0), 160.0);
+    let mut sheet = Sheet::new(1000.0, 600.0, "Reflection: r = d − 2(d·n)n");
+    let (p, k): (P, f32) = ((440.0, 290.0), 215.0);
     let to = |v: Vec3| -> P { (p.0 + v.x * k, p.1 - v.y * k) };
     let n = Vec3::Y;
     let d = incoming(40.0, 1.0);
     let r = reflect(d, n);
     let dn = d.dot(n);
     // The surface, and the glass-free side under it.
-    sheet.fill_rect((60.0, p.1), (640.0, 170.0), [242, 242, 242]);
-    sheet.line((60.0, p.1), (700.0, p.1), AXIS, 2.5);
+    sheet.fill_rect((80.0, p.1), (840.0, 220.0), [242, 242, 242]);
+    sheet.line((80.0, p.1), (920.0, p.1), AXIS, 2.5);
     sheet.text(
-        (690.0, p.1 + 10.0),
+        (910.0, p.1 + 10.0),
         "surface",
         SMALL,
         TEXT_MUTED,
@@ -72,7 +72,7 @@ pub fn reflection_figure() -> RgbImage {
     // d arrives at p; drawn again from p (dashed) to build r from it.
     sheet.arrow(to(-d), p, D, 2.5);
     sheet.label(
-        along(to(-d * 0.55), (-14.0, 0.0), 1.0),
+        along(to(-d * 0.55), (-22.0, 0.0), 1.0),
         "d",
         LABEL,
         D,
@@ -80,11 +80,11 @@ pub fn reflection_figure() -> RgbImage {
     );
     sheet.dashed(p, to(d), D, 1.5);
     sheet.text(
-        along(to(d), (-10.0, 0.0), 1.0),
+        along(to(d), (0.0, 12.0), 1.0),
         "d, moved to p",
         SMALL,
         TEXT_MUTED,
-        Anchor::MIDDLE_RIGHT,
+        Anchor::TOP_CENTRE,
     );
     // −2(d·n)n: from the tip of d straight up, twice d's normal part.
     sheet.arrow(to(d), to(d - 2.0 * dn * n), PART, 2.5);
@@ -105,8 +105,9 @@ pub fn reflection_figure() -> RgbImage {
         Anchor::MIDDLE_RIGHT,
     );
     sheet.arrow(p, to(r), R, 3.0);
+    // Level with r's tip, beyond the arrow that ends there with it.
     sheet.label(
-        along(to(r * 0.6), (14.0, 0.0), 1.0),
+        (to(d).0 + 16.0, to(r * 0.92).1),
         "r = d − 2(d·n)n",
         LABEL,
         R,
@@ -125,14 +126,14 @@ pub fn reflection_figure() -> RgbImage {
     let angle_in = (-d).dot(n).acos();
     let angle_out = r.dot(n).acos();
     sheet.text(
-        along(p, (-40.0, -100.0), 1.0),
+        along(p, (-54.0, -134.0), 1.0),
         &degrees(angle_in),
         SMALL,
         TEXT_MUTED,
         Anchor::MIDDLE_RIGHT,
     );
     sheet.text(
-        along(p, (40.0, -100.0), 1.0),
+        along(p, (54.0, -134.0), 1.0),
         &degrees(angle_out),
         SMALL,
         TEXT_MUTED,
@@ -157,28 +158,28 @@ pub fn snell_figure() -> RgbImage {
     let ior = glass_ior();
     let critical = critical_angle(ior);
     let mut sheet = Sheet::new(
-        1060.0,
-        560.0,
+        1200.0,
+        664.0,
         &format!("Snell's law at the lab's glass (ior {ior}): n1 sin θ1 = n2 sin θ2"),
     );
-    let length = 180.0;
+    let length = 200.0;
     let glass_fill: Rgb = [226, 238, 246];
     let tir = kind_colour(RayKind::TotalInternalReflection);
     for panel in 0..2 {
-        let p: P = (270.0 + 520.0 * panel as f32, 280.0);
+        let p: P = (295.0 + 610.0 * panel as f32, 330.0);
         let to = |v: Vec3| -> P { (p.0 + v.x * length, p.1 - v.y * length) };
         // Air above, glass below, in both panels.
-        sheet.fill_rect((p.0 - 240.0, p.1), (480.0, 200.0), glass_fill);
-        sheet.line((p.0 - 240.0, p.1), (p.0 + 240.0, p.1), AXIS, 2.0);
+        sheet.fill_rect((p.0 - 265.0, p.1), (530.0, 240.0), glass_fill);
+        sheet.line((p.0 - 265.0, p.1), (p.0 + 265.0, p.1), AXIS, 2.0);
         sheet.text(
-            (p.0 + 236.0, p.1 - 8.0),
+            (p.0 + 258.0, p.1 - 8.0),
             "air, n = 1",
             SMALL,
             TEXT_MUTED,
             Anchor::BASELINE_RIGHT,
         );
         sheet.text(
-            (p.0 + 236.0, p.1 + 8.0),
+            (p.0 + 258.0, p.1 + 8.0),
             &format!("glass, n = {ior}"),
             SMALL,
             TEXT_MUTED,
@@ -187,7 +188,7 @@ pub fn snell_figure() -> RgbImage {
         sheet.dashed(to(Vec3::Y * 1.05), to(Vec3::NEG_Y * 1.05), AXIS, 1.0);
         if panel == 0 {
             sheet.text(
-                (p.0, 58.0),
+                (p.0, 64.0),
                 &format!("into the glass: refract(d, n, 1/{ior}) bends towards n"),
                 LABEL,
                 TEXT,
@@ -208,7 +209,7 @@ pub fn snell_figure() -> RgbImage {
                     Anchor::BOTTOM_CENTRE,
                 );
                 sheet.text(
-                    (p.0 - 225.0, p.1 + 40.0 + 20.0 * m as f32),
+                    (p.0 - 255.0, p.1 + 44.0 + LINE * m as f32),
                     &format!("{angle:.0}° in air → {} in glass", degrees(bent)),
                     SMALL,
                     colour,
@@ -217,7 +218,7 @@ pub fn snell_figure() -> RgbImage {
             }
         } else {
             sheet.text(
-                (p.0, 58.0),
+                (p.0, 64.0),
                 &format!("out of the glass: refract(d, n, {ior}) bends away from n"),
                 LABEL,
                 TEXT,
@@ -228,54 +229,52 @@ pub fn snell_figure() -> RgbImage {
                 let out = refract(d, Vec3::NEG_Y, ior);
                 let colour = if out.is_some() { series_colour(m) } else { tir };
                 sheet.line(to(-d), p, colour, 2.0);
+                // Beyond the ray's start, turned a little away from the
+                // critical angle's line, which runs between 35° and 45°.
+                let turn = if angle < critical { -4.0 } else { 4.0 };
                 sheet.label(
-                    along(to(-d * 1.02), (0.0, 4.0), 1.0),
+                    to(-incoming(angle + turn, -1.0) * 1.1),
                     &format!("{angle:.0}°"),
                     SMALL,
                     colour,
-                    Anchor::TOP_CENTRE,
+                    Anchor::MIDDLE_CENTRE,
                 );
-                match out {
+                let line = match out {
                     Some(t) => {
                         sheet.arrow(p, to(t * 0.95), colour, 2.0);
-                        sheet.text(
-                            (p.0 - 225.0, p.1 - 160.0 + 20.0 * m as f32),
-                            &format!("{angle:.0}° in glass → {} in air", degrees(t.x.asin())),
-                            SMALL,
-                            colour,
-                            Anchor::BASELINE_LEFT,
-                        );
+                        format!("{angle:.0}° in glass → {} in air", degrees(t.x.asin()))
                     }
                     None => {
                         let r = reflect(d, Vec3::NEG_Y);
                         sheet.arrow(p, to(r * 0.8), tir, 2.0);
-                        sheet.text(
-                            (p.0 - 225.0, p.1 - 160.0 + 20.0 * m as f32),
-                            &format!("{angle:.0}° in glass → None: reflected"),
-                            SMALL,
-                            colour,
-                            Anchor::BASELINE_LEFT,
-                        );
+                        format!("{angle:.0}° in glass → None: reflected")
                     }
-                }
+                };
+                // In the air on the left, ending short of the normal.
+                let widest = sheet.text_width("45° in glass → None: reflected", SMALL);
+                sheet.text(
+                    (p.0 - 16.0 - widest, p.1 - 190.0 + LINE * m as f32),
+                    &line,
+                    SMALL,
+                    colour,
+                    Anchor::BASELINE_LEFT,
+                );
             }
             // The critical angle, dashed, inside the glass.
             let c = incoming(critical, -1.0);
-            sheet.dashed(to(-c * 1.12), p, TEXT, 1.5);
+            // Longer than the rays, so that its label clears theirs.
+            sheet.dashed(to(-c * 1.25), p, TEXT, 1.5);
             sheet.label(
-                along(to(-c * 1.12), (-4.0, 2.0), 1.0),
+                along(to(-c * 1.25), (-2.0, 4.0), 1.0),
                 &format!("critical {critical:.2}°"),
                 SMALL,
                 TEXT,
                 Anchor::TOP_RIGHT,
             );
-            sheet.legend(
-                (p.0 - 235.0, 500.0),
-                &[(
-                    tir,
-                    "past the critical angle: refract returns None, all of it reflects",
-                )],
-            );
+            // Ending at the panel's right edge.
+            let text = "past the critical angle: refract returns None, all of it reflects";
+            let width = 32.0 + sheet.text_width(text, SMALL);
+            sheet.legend((p.0 + 265.0 - width, p.1 + 256.0), &[(tir, text)]);
         }
         sheet.dot(p, TEXT);
     }

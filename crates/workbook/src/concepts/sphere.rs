@@ -72,16 +72,16 @@ pub fn figure() -> RgbImage {
         radius: 1.0,
     };
     let mut sheet = Sheet::new(
-        1020.0,
-        470.0,
+        1200.0,
+        560.0,
         "Ray meets sphere: the roots of t² + 2bt + q = 0",
     );
-    let k = 78.0;
+    let k = 92.0;
     for (n, (title, ray)) in cases().into_iter().enumerate() {
-        let cx = 170.0 + 340.0 * n as f32;
-        let cy = 200.0;
+        let cx = 200.0 + 400.0 * n as f32;
+        let cy = 255.0;
         let to = |p: Vec3| -> P { (cx + p.x * k, cy - p.y * k) };
-        sheet.text((cx, 60.0), title, LABEL, TEXT, Anchor::TOP_CENTRE);
+        sheet.text((cx, 64.0), title, LABEL, TEXT, Anchor::TOP_CENTRE);
         sheet.circle((cx, cy), k, Some([232, 240, 248]), Some(AXIS));
         sheet.dot((cx, cy), AXIS);
         sheet.text(
@@ -156,7 +156,7 @@ pub fn figure() -> RgbImage {
         for (m, line) in lines.iter().enumerate() {
             let colour = if m == 3 { TEXT } else { TEXT_MUTED };
             sheet.text(
-                (cx, 330.0 + 20.0 * m as f32),
+                (cx, cy + k + 42.0 + 26.0 * m as f32),
                 line,
                 LABEL,
                 colour,
@@ -165,11 +165,11 @@ pub fn figure() -> RgbImage {
         }
     }
     sheet.legend(
-        (40.0, 420.0),
+        (60.0, 498.0),
         &[(ENTER, "t0 = −b − √(b² − q): where the line enters")],
     );
     sheet.legend(
-        (540.0, 420.0),
+        (660.0, 498.0),
         &[(LEAVE, "t1 = −b + √(b² − q): where it leaves")],
     );
     sheet.note(
