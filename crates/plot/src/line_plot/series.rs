@@ -76,14 +76,7 @@ impl LinePlot {
             frame.bottom - frame.top + 2.0 * margin,
         );
         for series in &self.series {
-            let pixels: Vec<Option<(f32, f32)>> = series
-                .points
-                .iter()
-                .map(|&(x, y)| {
-                    let y = self.clamp_y(y);
-                    (x.is_finite() && y.is_finite()).then(|| frame.pixel_of(x, y))
-                })
-                .collect();
+            let pixels = self.pixels(series, frame);
             // Each run of drawable points is one unbroken polyline.
             for run in pixels.split(Option::is_none) {
                 let run: Vec<(f32, f32)> = run.iter().flatten().copied().collect();
@@ -100,6 +93,19 @@ impl LinePlot {
         canvas.clear_clip();
     }
 
+    /// Where each point of `series` lands on `frame`, or `None` for a
+    /// point that breaks the line (a NaN or infinite coordinate).
+    fn pixels(&self, series: &Series, frame: &Frame) -> Vec<Option<(f32, f32)>> {
+        series
+            .points
+            .iter()
+            .map(|&(x, y)| {
+                let y = self.clamp_y(y);
+                (x.is_finite() && y.is_finite()).then(|| frame.pixel_of(x, y))
+            })
+            .collect()
+    }
+
     /// Points along every drawn line, a pixel or two apart: what a label
     /// must not cover.
     pub(super) fn ink(&self, layout: &Layout) -> Vec<(f32, f32)> {
@@ -109,14 +115,7 @@ impl LinePlot {
         }
         let mut trace = |plot: &LinePlot, frame: &Frame| {
             for series in &plot.series {
-                let pixels: Vec<Option<(f32, f32)>> = series
-                    .points
-                    .iter()
-                    .map(|&(x, y)| {
-                        let y = plot.clamp_y(y);
-                        (x.is_finite() && y.is_finite()).then(|| frame.pixel_of(x, y))
-                    })
-                    .collect();
+                let pixels = plot.pixels(series, frame);
                 for pair in pixels.windows(2) {
                     let (Some(a), Some(b)) = (pair[0], pair[1]) else {
                         continue;
