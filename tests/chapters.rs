@@ -13,7 +13,7 @@ fn settings(max_depth: u32, spp: u32) -> Settings {
     }
 }
 
-fn render_with<S: Step + ?Sized>(step: &S, settings: &Settings) -> Rendered {
+fn render_lab<S: Step + ?Sized>(step: &S, settings: &Settings) -> Rendered {
     render(
         &Scene::lab(),
         &Camera::lab(),
@@ -84,7 +84,7 @@ fn no_chapter_ever_makes_a_nan_or_infinite_pixel() {
                 height: 30,
                 ..settings(max_depth, spp)
             };
-            let rendered = render_with(step, &settings);
+            let rendered = render_lab(step, &settings);
             assert_eq!(rendered.non_finite, 0);
             assert!(rendered.linear_image().is_finite());
             // The workers' 8-bit image is the linear one, encoded.
@@ -104,10 +104,10 @@ fn no_chapter_ever_makes_a_nan_or_infinite_pixel() {
 fn five_rays_per_pixel_only_soften_edges() {
     // Chapter 5 with --spp 1 is chapter 4; with 5 rays most pixels barely
     // change and the ones that do lie on edges.
-    let one = render_with(&ch05_antialiasing::Refraction, &settings(10, 1));
-    let four = render_with(&ch04_refraction::Refraction, &settings(10, 1));
+    let one = render_lab(&ch05_antialiasing::Refraction, &settings(10, 1));
+    let four = render_lab(&ch04_refraction::Refraction, &settings(10, 1));
     assert_eq!(one.linear_image(), four.linear_image());
-    let five = render_with(&ch05_antialiasing::Refraction, &settings(10, 5));
+    let five = render_lab(&ch05_antialiasing::Refraction, &settings(10, 5));
     let agreement = raylab_tests::compare(&one.srgb, &five.srgb);
     assert!(
         agreement.within_3 > 0.6 && agreement.within_3 < 1.0,
@@ -117,8 +117,8 @@ fn five_rays_per_pixel_only_soften_edges() {
 
 #[test]
 fn chapter_2_darkens_only_shadowed_points() {
-    let ch1 = render_with(&ch01_ray_cast::RayCast, &settings(1, 1));
-    let ch2 = render_with(&ch02_shadows::Shadows, &settings(1, 1));
+    let ch1 = render_lab(&ch01_ray_cast::RayCast, &settings(1, 1));
+    let ch2 = render_lab(&ch02_shadows::Shadows, &settings(1, 1));
     let mut darker = 0;
     for (a, b) in ch1
         .linear_image()

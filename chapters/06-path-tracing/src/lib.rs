@@ -26,5 +26,5 @@ pub mod run;
 pub mod sun;
 
 pub use integrator::{Materials, PathTracer, Terms};
-pub use render::{PathRender, PathSettings, render_paths, render_paths_with, render_with};
+pub use render::{PathRender, PathSettings, path_frame, render_paths, render_paths_with_query};
 pub use run::{Flags, PROGRAM, PathProgram, main, run, run_matches};

@@ -105,12 +105,13 @@ pub fn render_paths(
     settings: &PathSettings,
     progress: &dyn Progress,
 ) -> PathRender {
-    render_paths_with(scene, scene, camera, settings, progress)
+    render_paths_with_query(scene, scene, camera, settings, progress)
 }
 
 /// [`render_paths`], with every hit found by `objects`: a [`SceneQuery`]
-/// that gives the scene's own answers another way (chapter 9's tree).
-pub fn render_paths_with<Q: SceneQuery>(
+/// that gives the scene's own answers another way (chapter 9's tree),
+/// named and typed by the core's rule ([`raylab::render::render_with_query`]).
+pub fn render_paths_with_query<Q: SceneQuery>(
     scene: &Scene,
     objects: &Q,
     camera: &Camera,
@@ -118,7 +119,7 @@ pub fn render_paths_with<Q: SceneQuery>(
     progress: &dyn Progress,
 ) -> PathRender {
     let width = settings.width as usize;
-    render_with(scene, objects, settings, |tracer, rows| {
+    path_frame(scene, objects, settings, |tracer, rows| {
         // ANCHOR: rows
         // Every row on every core, each written by its worker straight
         // into its place in the output images.
@@ -142,8 +143,10 @@ pub fn render_paths_with<Q: SceneQuery>(
 /// [`SceneQuery`] that gives the same answers), trace the caustic map
 /// first if asked for, hand `rows` the output images row by row, and
 /// gather the result. `rows` returns the rays traced and the samples that
-/// came out NaN or infinite.
-pub fn render_with<Q: SceneQuery>(
+/// came out NaN or infinite. It is the frame, not a renderer (hence not a
+/// `render_…` name): the renderers of chapters 6 and 8 are the rows they
+/// hand it.
+pub fn path_frame<Q: SceneQuery>(
     scene: &Scene,
     objects: &Q,
     settings: &PathSettings,

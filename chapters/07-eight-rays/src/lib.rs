@@ -35,8 +35,10 @@ pub mod soa;
 pub mod stats;
 pub mod wave;
 
+use ch09_many_spheres::Bvh;
 use raylab::{Hit, Ray, Step, Surface, Vec3};
 use raylab_cli::Chapter;
+use raylab_lanes::BvhX8;
 
 pub use ch09_many_spheres::Objects;
 pub use raylab_like::{Features, Like};
@@ -70,24 +72,37 @@ pub fn chapter(like: Like) -> Chapter<EightRays> {
     chapter_through(like, Objects::List)
 }
 
-/// Chapter 7's program, its hits found as `objects` says: in the list, or
-/// (`--objects tree`) through chapter 9's tree. The renderer is chosen
-/// here, once for the whole render.
+/// What `--help` says of chapter 7's program.
+const ABOUT: &str = "Chapter 7, eight rays at a time: chapter 5's image, to the byte, traced in \
+                     waves of 8-wide SIMD. --like ch01-ray-cast … ch05-antialiasing traces as \
+                     that chapter does, with its defaults (default: ch05-antialiasing); \
+                     --objects tree finds every hit through chapter 9's tree of boxes.";
+
+// ANCHOR: tree
+/// Chapter 7's program, its hits found as `objects` says: the renderer is
+/// chosen here, once for the whole render. With `--objects tree` it is
+/// [`render::render_waves_with_query`] over chapter 9's tree, built first
+/// (the build is part of the time) and searched eight rays against each
+/// node ([`BvhX8`]): the same bytes.
 pub fn chapter_through(like: Like, objects: Objects) -> Chapter<EightRays> {
     let defaults = like.defaults();
     Chapter {
         binary: BINARY,
-        about: "Chapter 7, eight rays at a time: chapter 5's image, to the byte, traced in waves of \
-                8-wide SIMD. --like ch01-ray-cast … ch05-antialiasing traces as that chapter does, \
-                with its defaults (default: ch05-antialiasing); --objects tree finds every hit \
-                through chapter 9's tree of boxes.",
+        about: ABOUT,
         max_depth: defaults.max_depth,
         spp: defaults.spp,
         probe: defaults.probe,
         step: EightRays { like },
         render: match objects {
             Objects::List => render::render_waves,
-            Objects::Tree => render::render_tree_waves,
+            Objects::Tree => |scene, camera, step, settings, keep, progress| {
+                let tree = Bvh::build(scene);
+                let lanes = BvhX8::new(&tree);
+                render::render_waves_with_query(
+                    scene, &lanes, camera, step, settings, keep, progress,
+                )
+            },
         },
     }
 }
+// ANCHOR_END: tree

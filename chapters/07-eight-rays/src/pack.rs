@@ -10,8 +10,8 @@
 use raylab::RayKind;
 use raylab::trace::RayCounts;
 
+use crate::shade::Shaded;
 use crate::soa::{Group, LANES, Rays};
-use crate::wave::Shaded;
 
 // ANCHOR: pack
 /// Which lanes of a group send on a reflected and a transmitted ray, lane

@@ -4,13 +4,12 @@
 use std::cell::RefCell;
 use std::time::Instant;
 
-use ch09_many_spheres::Bvh;
 use raylab::frame::RowTally;
 use raylab::outputs::{Outputs, RowOutputs};
 use raylab::render::Progress;
 use raylab::trace::RayCounts;
 use raylab::{Camera, Keep, RayKind, Rendered, Scene, Settings, Tracer, Vec3};
-use raylab_lanes::{BvhX8, SceneQueryX8, SceneX8};
+use raylab_lanes::{SceneQueryX8, SceneX8};
 use rayon::prelude::*;
 
 use crate::EightRays;
@@ -112,10 +111,11 @@ pub fn render_waves(
 }
 
 /// [`render_waves`], with every hit found by `query` (chapter 9's tree)
-/// rather than by testing every sphere: the same bytes.
-pub fn render_waves_with(
+/// rather than by testing every sphere: the same bytes. Named and typed
+/// by the core's rule ([`raylab::render::render_with_query`]).
+pub fn render_waves_with_query<Q: SceneQueryX8>(
     scene: &Scene,
-    query: &dyn SceneQueryX8,
+    query: &Q,
     camera: &Camera,
     step: &EightRays,
     settings: &Settings,
@@ -124,24 +124,6 @@ pub fn render_waves_with(
 ) -> Rendered {
     render_waves_or_query(scene, Some(query), camera, step, settings, keep, progress)
 }
-
-// ANCHOR: tree
-/// [`render_waves`], with every hit found through chapter 9's tree, eight
-/// rays against each node ([`BvhX8`]): `--objects tree`, the same bytes.
-/// The tree is built first, and its build is part of the time.
-pub fn render_tree_waves(
-    scene: &Scene,
-    camera: &Camera,
-    step: &EightRays,
-    settings: &Settings,
-    keep: Keep,
-    progress: &dyn Progress,
-) -> Rendered {
-    let tree = Bvh::build(scene);
-    let lanes = BvhX8::new(&tree);
-    render_waves_with(scene, &lanes, camera, step, settings, keep, progress)
-}
-// ANCHOR_END: tree
 
 fn render_waves_or_query(
     scene: &Scene,

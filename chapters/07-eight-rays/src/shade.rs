@@ -11,6 +11,23 @@ use wide::{CmpGt, f32x8};
 use crate::Features;
 use crate::soa::Vec3x8;
 
+/// What eight rays' shading computed: the light they add, and the rays
+/// they send on (for lanes whose masks are set).
+pub(crate) struct Shaded {
+    pub added: Vec3x8,
+    pub hit: f32x8,
+    pub reflects: f32x8,
+    pub transmits: f32x8,
+    pub reflected: Option<(Vec3x8, Vec3x8)>,
+    /// The transmitted direction and origin, and the mask of total
+    /// internal reflection (where the mirror direction is used instead).
+    pub transmitted: Option<(Vec3x8, Vec3x8, f32x8)>,
+    pub reflection: f32x8,
+    pub transmission: f32x8,
+    /// Set where the ray arrived from outside its surface.
+    pub entering: f32x8,
+}
+
 /// The sky and the sun as eight-lane constants.
 #[derive(Clone, Copy, Debug)]
 pub struct Light {

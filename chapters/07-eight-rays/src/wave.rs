@@ -23,7 +23,7 @@ use crate::camera::{Primary, PrimaryRays};
 use crate::ledger::Ledger;
 use crate::link::LATER;
 use crate::pack::{Links, Sends, pack_children};
-use crate::shade::{Light, senders};
+use crate::shade::{Light, Shaded, senders};
 use crate::soa::{Group, LANES, Rays, Vec3x8};
 
 /// The fixed part of a render: the scene in lanes, the light, the limits.
@@ -37,23 +37,6 @@ pub struct Setup<'s> {
     pub epsilon: f32,
     /// Whether each sample's rays and depth are kept, for the heat maps.
     pub maps: bool,
-}
-
-/// What eight rays' shading computed: the light they add, and the rays
-/// they send on (for lanes whose masks are set).
-pub(crate) struct Shaded {
-    pub added: Vec3x8,
-    pub hit: f32x8,
-    pub reflects: f32x8,
-    pub transmits: f32x8,
-    pub reflected: Option<(Vec3x8, Vec3x8)>,
-    /// The transmitted direction and origin, and the mask of total
-    /// internal reflection (where the mirror direction is used instead).
-    pub transmitted: Option<(Vec3x8, Vec3x8, f32x8)>,
-    pub reflection: f32x8,
-    pub transmission: f32x8,
-    /// Set where the ray arrived from outside its surface.
-    pub entering: f32x8,
 }
 
 // ANCHOR: group

@@ -3,8 +3,8 @@
 //! the same bytes, counts and maps as the list, on the lab scene and on a
 //! field of spheres, like each Whitted chapter.
 
-use ch07_eight_rays::render::{render_tree_waves, render_waves};
-use ch07_eight_rays::{EightRays, Like};
+use ch07_eight_rays::render::render_waves;
+use ch07_eight_rays::{EightRays, Like, Objects};
 use ch09_many_spheres::field::field_scene;
 use raylab::{Camera, Keep, NoProgress, Scene, Settings, Step};
 use raylab_cli::Options;
@@ -29,7 +29,9 @@ fn chapter_7s_waves_through_the_tree_make_chapter_7s_images_like_each_chapter() 
                 maps: true,
             };
             let list = render_waves(&scene, &camera, &step, &settings, keep, &NoProgress);
-            let tree = render_tree_waves(&scene, &camera, &step, &settings, keep, &NoProgress);
+            // The renderer `--objects tree` chooses: the tree built, then searched.
+            let through_tree = ch07_eight_rays::chapter_through(like, Objects::Tree).render;
+            let tree = through_tree(&scene, &camera, &step, &settings, keep, &NoProgress);
             assert!(list.srgb == tree.srgb, "{like:?}: the images differ");
             assert_eq!(list.counts, tree.counts, "{like:?}");
             assert!(list.maps == tree.maps, "{like:?}: the maps differ");

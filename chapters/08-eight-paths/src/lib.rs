@@ -31,7 +31,7 @@
 //! `raylab-lanes'`, shared with chapter 7. The program is chapter 6's, with
 //! this renderer: the same flags, the same files, and one more,
 //! `--objects tree` ([`Objects`]), which finds every hit through chapter
-//! 9's tree ([`render_tree_paths`]).
+//! 9's tree ([`program_through`]).
 
 pub mod density;
 pub mod lane_use;
@@ -41,15 +41,13 @@ pub mod starts;
 pub mod terms;
 pub mod window;
 
-use ch06_path_tracing::{PathProgram, PathRender, PathSettings};
+use ch06_path_tracing::PathProgram;
 use ch09_many_spheres::Bvh;
-use raylab::render::Progress;
-use raylab::{Camera, Scene};
 use raylab_cli::Program;
 use raylab_lanes::BvhX8;
 
 pub use ch09_many_spheres::Objects;
-pub use render::{lane_use, render_eight, render_eight_with};
+pub use render::{lane_use, render_eight, render_eight_with_query};
 
 /// Chapter 8's program: chapter 6's, with its defaults, rendered eight
 /// paths at a time.
@@ -65,29 +63,22 @@ pub const PROGRAM: PathProgram = PathProgram {
     render: render_eight,
 };
 
+// ANCHOR: tree
 /// Chapter 8's program, its hits found as `objects` says: the renderer
-/// is chosen here, once for the whole render.
+/// is chosen here, once for the whole render. With `--objects tree` it is
+/// [`render_eight_with_query`] over chapter 9's tree, built first (the
+/// build is part of the time): the paths search it eight at a time
+/// ([`BvhX8`]), the photons one at a time. The same bytes.
 pub fn program_through(objects: Objects) -> PathProgram {
     PathProgram {
         render: match objects {
             Objects::List => render_eight,
-            Objects::Tree => render_tree_paths,
+            Objects::Tree => |scene, camera, settings, progress| {
+                let tree = Bvh::build(scene);
+                render_eight_with_query(scene, &BvhX8::new(&tree), camera, settings, progress)
+            },
         },
         ..PROGRAM
     }
-}
-
-// ANCHOR: tree
-/// [`render_eight`], with every hit found through chapter 9's tree
-/// (`--objects tree`): the paths' eight at a time ([`BvhX8`]), the
-/// photons' one at a time. The same bytes.
-pub fn render_tree_paths(
-    scene: &Scene,
-    camera: &Camera,
-    settings: &PathSettings,
-    progress: &dyn Progress,
-) -> PathRender {
-    let tree = Bvh::build(scene);
-    render_eight_with(scene, &BvhX8::new(&tree), camera, settings, progress)
 }
 // ANCHOR_END: tree

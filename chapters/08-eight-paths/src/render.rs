@@ -2,7 +2,7 @@
 //! the output images) around rows traced eight paths at a time.
 
 use ch06_path_tracing::pixel::RowImages;
-use ch06_path_tracing::{PathRender, PathSettings, PathTracer, render_with};
+use ch06_path_tracing::{PathRender, PathSettings, PathTracer, path_frame};
 use raylab::SceneQuery;
 use raylab::Vec3;
 use raylab::render::Progress;
@@ -29,7 +29,7 @@ pub fn render_eight(
 ) -> PathRender {
     let spheres = SpheresX8::new(scene);
     let lanes = SceneX8::new(scene);
-    render_with(scene, &spheres, settings, |tracer, rows| {
+    path_frame(scene, &spheres, settings, |tracer, rows| {
         render_rows(tracer, &lanes, camera, settings, progress, rows)
     })
 }
@@ -37,7 +37,7 @@ pub fn render_eight(
 /// [`render_eight`], with every hit found by `query` (chapter 9's tree),
 /// the paths' eight at a time and the photons' one at a time, rather than
 /// by testing every sphere: the same bytes.
-pub fn render_eight_with<Q: SceneQueryX8>(
+pub fn render_eight_with_query<Q: SceneQueryX8>(
     scene: &Scene,
     query: &Q,
     camera: &Camera,
@@ -45,7 +45,7 @@ pub fn render_eight_with<Q: SceneQueryX8>(
     progress: &dyn Progress,
 ) -> PathRender {
     let lanes = SceneX8::new(scene).with_query(query);
-    render_with(scene, query, settings, |tracer, rows| {
+    path_frame(scene, query, settings, |tracer, rows| {
         render_rows(tracer, &lanes, camera, settings, progress, rows)
     })
 }
@@ -58,7 +58,7 @@ pub fn lane_use(scene: &Scene, camera: &Camera, settings: &PathSettings) -> Lane
     let spheres = SpheresX8::new(scene);
     let lanes = SceneX8::new(scene);
     let mut used = LaneUse::default();
-    render_with(scene, &spheres, settings, |tracer, rows| {
+    path_frame(scene, &spheres, settings, |tracer, rows| {
         let camera = CameraX8::new(camera, settings.width, settings.height);
         let (mut paths, mut window, mut starts) = Default::default();
         let mut totals = (0, 0);

@@ -3,7 +3,7 @@
 //! the photons' one at a time), to the bit, caustics included.
 
 use ch06_path_tracing::{PathSettings, run};
-use ch08_eight_paths::{render_eight, render_tree_paths};
+use ch08_eight_paths::{Objects, program_through, render_eight};
 use ch09_many_spheres::field::field_scene;
 use raylab::{Camera, NoProgress, Scene};
 
@@ -39,7 +39,8 @@ fn chapter_8s_paths_through_the_tree_make_chapter_8s_images_caustics_included() 
     for (scene, camera, extra) in runs {
         let settings = path_settings(extra);
         let list = render_eight(&scene, &camera, &settings, &NoProgress);
-        let tree = render_tree_paths(&scene, &camera, &settings, &NoProgress);
+        // The renderer `--objects tree` chooses: the tree built, then searched.
+        let tree = (program_through(Objects::Tree).render)(&scene, &camera, &settings, &NoProgress);
         let bits = |img: &raylab::linear_image::LinearImage| {
             img.pixels()
                 .iter()

@@ -17,7 +17,7 @@
 //!
 //! The tree is a [`raylab::SceneQuery`]: any tracer that asks a query
 //! rather than the scene (the core's `Tracer::with_query`, chapter 6's
-//! `render_with`) traces through it and makes the same bytes. `--like
+//! `render_paths_with_query`) traces through it and makes the same bytes. `--like
 //! chNN-…` traces as any of chapters 1–5.
 //!
 //! This crate is floor A: the tree and the program that teaches it, on the
@@ -40,10 +40,7 @@ pub mod field;
 pub mod objects;
 pub mod program;
 
-use raylab::Scene;
-use raylab::camera::Camera;
-use raylab::frame::{Keep, Rendered, Settings};
-use raylab::render::{Progress, render_with_query};
+use raylab::render::render_with_query;
 use raylab_cli::Chapter;
 
 pub use bvh::Bvh;
@@ -53,39 +50,33 @@ pub use raylab_like::Like;
 /// The program's name, which is also its default output folder.
 pub const BINARY: &str = "ch09-many-spheres";
 
-// ANCHOR: render
-/// The core's render, with every ray's hit found through a tree built
-/// over the scene's spheres first (the build is part of the time). The
-/// step is a Whitted chapter's shading, unchanged: what this chapter
-/// changes is how each ray finds its hit.
-pub fn render_tree(
-    scene: &Scene,
-    camera: &Camera,
-    step: &Like,
-    settings: &Settings,
-    keep: Keep,
-    progress: &dyn Progress,
-) -> Rendered {
-    let tree = Bvh::build(scene);
-    render_with_query(scene, &tree, camera, step, settings, keep, progress)
-}
-// ANCHOR_END: render
+/// What `--help` says of chapter 9's program.
+const ABOUT: &str = "Chapter 9, many spheres: every ray's hit found through a bounding volume \
+                     hierarchy, to the same bytes as testing every sphere. --like ch01-ray-cast … \
+                     ch05-antialiasing traces as that chapter does (default: ch05-antialiasing); \
+                     `generate-field N [--seed S]` prints a scene file of N random spheres. \
+                     Chapters 7 and 8 search the same tree with --objects tree.";
 
+// ANCHOR: render
 /// Chapter 9's program, tracing as the chapter `like` does, with its
-/// defaults (chapter 5's when `--like` is not given).
+/// defaults (chapter 5's when `--like` is not given). Its renderer is the
+/// core's [`render_with_query`], with every ray's hit found through a tree
+/// built over the scene's spheres first (the build is part of the time).
+/// The step is a Whitted chapter's shading, unchanged: what this chapter
+/// changes is how each ray finds its hit.
 pub fn chapter(like: Like) -> Chapter<Like> {
     let defaults = like.defaults();
     Chapter {
         binary: BINARY,
-        about: "Chapter 9, many spheres: every ray's hit found through a bounding volume hierarchy, \
-                to the same bytes as testing every sphere. --like ch01-ray-cast … ch05-antialiasing \
-                traces as that chapter does (default: ch05-antialiasing); `generate-field N [--seed \
-                S]` prints a scene file of N random spheres. Chapters 7 and 8 search the same tree \
-                with --objects tree.",
+        about: ABOUT,
         max_depth: defaults.max_depth,
         spp: defaults.spp,
         probe: defaults.probe,
         step: like,
-        render: render_tree,
+        render: |scene, camera, step, settings, keep, progress| {
+            let tree = Bvh::build(scene);
+            render_with_query(scene, &tree, camera, step, settings, keep, progress)
+        },
     }
 }
+// ANCHOR_END: render

@@ -5,8 +5,8 @@
 
 use std::path::Path;
 
+use ch09_many_spheres::Like;
 use ch09_many_spheres::acne::speckled;
-use ch09_many_spheres::{Like, render_tree};
 use image::RgbImage;
 use raylab::{Keep, NoProgress, Settings};
 use raylab_cli::scene_file::load_file;
@@ -25,7 +25,7 @@ fn render(epsilon: f32) -> RgbImage {
         epsilon,
         sampling: raylab::Sampling::PIXEL_CENTRE,
     };
-    render_tree(
+    (nine.render)(
         &field.scene,
         &field.camera,
         &nine.step,

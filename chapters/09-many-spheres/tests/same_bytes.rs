@@ -1,9 +1,9 @@
 //! Through the tree, the same bytes: chapters 1–5's images and chapter
 //! 6's, on the lab scene and on a field of spheres.
 
-use ch06_path_tracing::{PathSettings, render_paths, render_paths_with};
+use ch06_path_tracing::{PathSettings, render_paths, render_paths_with_query};
 use ch09_many_spheres::field::field_scene;
-use ch09_many_spheres::{Bvh, Like, render_tree};
+use ch09_many_spheres::{Bvh, Like};
 use raylab::{Camera, Keep, NoProgress, Scene, Settings, Step};
 use raylab_cli::{Chapter, Options};
 
@@ -34,7 +34,7 @@ fn same_as<S: Step>(chapter: &Chapter<S>, like: Like, scene: &Scene, camera: &Ca
         Keep::IMAGE,
         &NoProgress,
     );
-    let ours = render_tree(
+    let ours = (nine.render)(
         scene,
         camera,
         &nine.step,
@@ -92,7 +92,7 @@ fn chapter_6_through_the_tree_makes_chapter_6s_images() {
         let settings = path_settings("8");
         let tree = Bvh::build(&scene);
         let list = render_paths(&scene, &camera, &settings, &NoProgress);
-        let ours = render_paths_with(&scene, &tree, &camera, &settings, &NoProgress);
+        let ours = render_paths_with_query(&scene, &tree, &camera, &settings, &NoProgress);
         let bits = |img: &raylab::linear_image::LinearImage| {
             img.pixels()
                 .iter()

@@ -298,10 +298,13 @@ fn rays_per_pixel(c: &mut Criterion) {
 /// scene through chapter 9 against chapter 5.
 /// `cargo bench -p raylab-bench -- "many spheres"`
 fn many_spheres(c: &mut Criterion) {
-    use ch07_eight_rays::render::render_tree_waves;
+    use ch07_eight_rays::Objects;
+    use ch09_many_spheres::Bvh;
     use ch09_many_spheres::field::field_scene;
-    use ch09_many_spheres::{Bvh, render_tree};
     let step = Like::AntiAliasing;
+    // The programs' renderers through the tree: each builds it first.
+    let through_tree = ch09_many_spheres::chapter(step).render;
+    let waves_through_tree = ch07_eight_rays::chapter_through(step, Objects::Tree).render;
     // Chapter 5's settings (depth 10, the lab's five rays) at this size.
     let chapter5_settings = |width: u32, height: u32| Settings {
         width,
@@ -341,7 +344,7 @@ fn many_spheres(c: &mut Criterion) {
                     render(&scene, &camera, &step, &settings, Keep::IMAGE, &NoProgress)
                 }
                 (true, false) => {
-                    render_tree(&scene, &camera, &step, &settings, Keep::IMAGE, &NoProgress)
+                    through_tree(&scene, &camera, &step, &settings, Keep::IMAGE, &NoProgress)
                 }
                 (false, true) => ch07_eight_rays::render::render_waves(
                     &scene,
@@ -352,7 +355,7 @@ fn many_spheres(c: &mut Criterion) {
                     &NoProgress,
                 ),
                 (true, true) => {
-                    render_tree_waves(&scene, &camera, &eight, &settings, Keep::IMAGE, &NoProgress)
+                    waves_through_tree(&scene, &camera, &eight, &settings, Keep::IMAGE, &NoProgress)
                 }
             };
             group.throughput(Throughput::Elements(draw().counts.total()));

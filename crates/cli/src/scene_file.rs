@@ -182,11 +182,11 @@ fn build(file: SceneFile) -> Result<SceneDescription, String> {
     let fail = |object: &str, rule: String| format!("{object}: {rule}");
     check_bounds(&file)?;
     if let Some(e) = file.epsilon
-        && !(e.is_finite() && (0.0..=crate::MAX_EPSILON).contains(&e))
+        && !(e.is_finite() && (0.0..=crate::limits::MAX_EPSILON).contains(&e))
     {
         return Err(format!(
             "epsilon is {e}, but it must be a number from 0 to {} (scene units)",
-            crate::MAX_EPSILON
+            crate::limits::MAX_EPSILON
         ));
     }
     let c = &file.camera;

@@ -7,8 +7,12 @@ use std::path::Path;
 use std::sync::atomic::Ordering;
 use std::time::{Duration, SystemTime, UNIX_EPOCH};
 
+use crate::error::CliError;
+use crate::flags::Options;
+use crate::program::Chapter;
+use crate::report::print_report;
+use crate::run::run;
 use crate::saves::{Saves, Watched, ctrl_c};
-use crate::{Chapter, CliError, Options, print_report, run};
 use raylab::trace::Step;
 
 /// Render, then watch `--scene` and render again after every save, until

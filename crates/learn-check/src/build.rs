@@ -11,7 +11,7 @@ use learn::exercise::Exercise;
 use learn::lab::Lab;
 use learn::run::{cargo, run_with_limit};
 
-use crate::check::Verdict;
+use crate::verdict::Verdict;
 
 /// The build's limit: the first build compiles the core (a few minutes on
 /// a slow machine); after that a build takes a second or two.

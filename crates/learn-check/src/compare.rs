@@ -1,5 +1,9 @@
 //! The learner's render against the reference, as the lab model's tolerance
-//! judges two implementations, and as OpenImageIO's `idiff` reports it.
+//! judges two implementations, and as OpenImageIO's `idiff` reports it;
+//! `save_images` writes the images compared where the learner looks.
+
+use std::io::Write;
+use std::path::Path;
 
 use image::{Rgb, RgbImage};
 
@@ -46,6 +50,19 @@ pub fn signed_colour(level: u8, brighter: bool) -> Rgb<u8> {
     } else {
         Rgb([0, level / 3, level])
     }
+}
+
+/// Write each `(name, image)` into `dir`, saying which could not be
+/// written; whether all were.
+pub(crate) fn save_images(images: &[(&str, RgbImage)], dir: &Path, out: &mut dyn Write) -> bool {
+    let mut saved = true;
+    for (name, image) in images {
+        if let Err(e) = raylab_cli::output::save_png(image, &dir.join(name)) {
+            let _ = writeln!(out, "      could not write {name}: {e}");
+            saved = false;
+        }
+    }
+    saved
 }
 
 #[cfg(test)]

@@ -11,7 +11,8 @@ use image::RgbImage;
 use learn::lab::Lab;
 use learn::mistakes::{Fingerprint, Mistake};
 
-use crate::check::{Limits, Verdict};
+use crate::verdict::Verdict;
+use learn::limits::Limits;
 
 /// After a failed check: the mistake of the catalogue it matches, or that
 /// none does; and for a picture that differs, what it shows.
@@ -56,7 +57,8 @@ pub(crate) fn after_failure(
         // render the learner's too, though its tests failed.
         let _ = std::fs::remove_file(picture_dir.join("learner.png"));
         let mut quiet = Vec::new();
-        let picture = crate::check::check_picture_with(lab, exercise, Limits::DEFAULT, &mut quiet);
+        let picture =
+            crate::chapter_stages::check_picture_with(lab, exercise, Limits::DEFAULT, &mut quiet);
         let image = matches!(picture, Verdict::Differs(_))
             .then(|| image::open(picture_dir.join("learner.png")).ok())
             .flatten()

@@ -14,7 +14,8 @@ use learn::lab::Lab;
 use learn::mistakes::{Fingerprint, Mistake, made_in, mistake_lab, of, source_file};
 use learn::path::Item;
 
-use crate::check::{Limits, Verdict};
+use crate::verdict::Verdict;
+use learn::limits::Limits;
 
 const LIMITS: Limits = Limits {
     tests: std::time::Duration::from_secs(20),
@@ -104,7 +105,7 @@ fn learn_one(cache: &Lab, item: Item, file: &Path, wrong: &str) -> Fingerprint {
             }
             let name = file.file_name().unwrap_or_default();
             let _ = std::fs::write(src.join(name), wrong);
-            let verdict = crate::core_check::check_core_quietly(cache, core, LIMITS, &mut quiet);
+            let verdict = crate::core_stages::check_core_quietly(cache, core, LIMITS, &mut quiet);
             (verdict, cache.core_check_dir(core))
         }
         Item::Chapter(chapter) => {
@@ -114,7 +115,7 @@ fn learn_one(cache: &Lab, item: Item, file: &Path, wrong: &str) -> Fingerprint {
             if let Ok(solved) = learn::exercise::blank_only(wrong, |_| false) {
                 let _ = std::fs::write(folder.join(chapter.step), solved.exercise);
             }
-            let verdict = crate::check::check_quietly(cache, chapter, LIMITS, &mut quiet);
+            let verdict = crate::chapter_stages::check_quietly(cache, chapter, LIMITS, &mut quiet);
             if let Verdict::TestsFail {
                 failing, messages, ..
             } = &verdict
@@ -123,7 +124,8 @@ fn learn_one(cache: &Lab, item: Item, file: &Path, wrong: &str) -> Fingerprint {
                 // same tests.
                 let image = folder.join("check/learner.png");
                 let _ = std::fs::remove_file(&image);
-                let picture = crate::check::check_picture_with(cache, chapter, LIMITS, &mut quiet);
+                let picture =
+                    crate::chapter_stages::check_picture_with(cache, chapter, LIMITS, &mut quiet);
                 return Fingerprint {
                     verdict: format!("{verdict:?}").chars().take(120).collect(),
                     failing: failing.clone(),

@@ -15,8 +15,8 @@ use image::RgbImage;
 use raylab::linear_image::LinearImage;
 use raylab::{Camera, NoProgress, Scene};
 
+use crate::compare::save_images;
 use crate::compare::signed_colour;
-use crate::report::save_images;
 use learn::run::shown;
 
 /// The most pixel channels that may lie more than [`FAR`] standard errors

@@ -3,6 +3,8 @@
 //! the lab model's tolerance (chapters 1 to 5) or within the two renders'
 //! own noise (chapter 6, [`crate::noisy`]).
 
+pub mod report;
+
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::Duration;
@@ -13,9 +15,9 @@ use learn::run::{panic_message, run_with_limit};
 use raylab::{Camera, Keep, NoProgress, Scene, Step, render};
 use raylab_cli::{Chapter, Options};
 
-use crate::check::Verdict;
 use crate::compare::compare;
-use crate::report::report_difference;
+use crate::verdict::Verdict;
+use report::report_difference;
 
 /// The size flags both renders use.
 pub(crate) fn size_flags() -> [String; 2] {

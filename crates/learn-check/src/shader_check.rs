@@ -28,8 +28,9 @@ use learn::run::{panic_message, run_with_limit, shown};
 use learn::shader::{CHAPTER, NAME, PACKAGE, PAGE, STAGES, Stage};
 
 use crate::build::{Builds, cargo_build, took};
-use crate::check::{Limits, Verdict};
 use crate::picture::{Picture, render_and_compare, size_flags};
+use crate::verdict::Verdict;
+use learn::limits::Limits;
 
 /// The words of chapter 10's error when it finds no GPU adapter.
 const NO_ADAPTER: &str = "no GPU adapter found";

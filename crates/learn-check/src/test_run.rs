@@ -7,7 +7,7 @@ use std::time::Duration;
 
 use learn::run::{TestResult, panic_message, parse_test_output, run_with_limit};
 
-use crate::check::Verdict;
+use crate::verdict::Verdict;
 
 /// Run the step's tests (the chapter's own), and list them as sentences.
 pub(crate) fn run_tests(

@@ -13,9 +13,11 @@ use raylab_cli::saves::{Saves, Watched, ctrl_c};
 use learn::lab::Lab;
 use learn::path::Item;
 
-use crate::check::{Limits, Verdict, check};
+use crate::check::check;
 use crate::core_check::check_core;
 use crate::shader_check::check_shader;
+use crate::verdict::Verdict;
+use learn::limits::Limits;
 
 /// Check, then check again after every save, until Ctrl-C.
 pub fn watch(lab: &Lab, item: Item, out: &mut dyn Write) -> Result<(), String> {

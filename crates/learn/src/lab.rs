@@ -278,7 +278,7 @@ impl Lab {
     }
 
     /// The chapters passed so far.
-    pub fn progress(&self) -> Progress {
+    pub fn progress(&self) -> LabRecord {
         std::fs::read_to_string(self.progress_path())
             .ok()
             .and_then(|text| toml::from_str(&text).ok())
@@ -325,7 +325,7 @@ impl Lab {
         Ok(())
     }
 
-    fn save_progress(&self, progress: &Progress) -> Result<(), LabError> {
+    fn save_progress(&self, progress: &LabRecord) -> Result<(), LabError> {
         let text = toml::to_string(progress).expect("sets of numbers and names serialise");
         let text = format!(
             "# Chapters (`passed`), their named exercises (`named`) and core exercises\n\
@@ -401,9 +401,11 @@ pub(crate) fn inline_spec(spec: &toml::Value, path: impl Fn(&str) -> String) -> 
     format!("{{ {} }}", fields.join(", "))
 }
 
-/// What the learner has done, kept in `my-lab/progress.toml`.
+/// The record of what the learner has done (the checks passed, the hints
+/// given), kept in `my-lab/progress.toml`. Not a render's progress (the
+/// core's `raylab::render::Progress`).
 #[derive(Clone, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-pub struct Progress {
+pub struct LabRecord {
     #[serde(default)]
     pub passed: BTreeSet<u8>,
     /// The chapters' named exercises passed (`cosine`).

@@ -4,7 +4,7 @@
 
 use crate::core::{CoreExercise, core_exercise};
 use crate::exercise::{Exercise, exercise_named};
-use crate::lab::{Lab, Progress};
+use crate::lab::{Lab, LabRecord};
 use crate::shader;
 
 /// One exercise of the path.
@@ -48,7 +48,7 @@ pub fn items() -> impl Iterator<Item = Item> {
 
 /// The exercise to do after `name`: the first after it on the path that
 /// is not passed yet.
-pub fn next_after(name: &str, progress: &Progress) -> Option<Item> {
+pub fn next_after(name: &str, progress: &LabRecord) -> Option<Item> {
     items()
         .skip_while(|item| item.name() != name)
         .skip(1)
@@ -57,7 +57,7 @@ pub fn next_after(name: &str, progress: &Progress) -> Option<Item> {
 
 /// The line a pass ends with: the next exercise and the command that
 /// starts it, or the end of the path.
-pub fn next_line(name: &str, progress: &Progress) -> String {
+pub fn next_line(name: &str, progress: &LabRecord) -> String {
     match next_after(name, progress) {
         Some(item) => format!(
             "Next: `{}`, {}: cargo run -p learn -- start {}",
@@ -114,7 +114,7 @@ impl Item {
         }
     }
 
-    pub fn passed(&self, progress: &Progress) -> bool {
+    pub fn passed(&self, progress: &LabRecord) -> bool {
         match self {
             Item::Core(core) => progress.core.contains(core.name),
             Item::Chapter(chapter) => match chapter.name {
@@ -142,7 +142,7 @@ mod tests {
 
     #[test]
     fn after_a_pass_the_next_exercise_is_the_first_later_one_not_passed() {
-        let mut progress = Progress::default();
+        let mut progress = LabRecord::default();
         assert_eq!(
             next_after("ray", &progress).map(|i| i.name()),
             Some("camera".into())

@@ -10,7 +10,7 @@
 //! - [`text`]: anchors, measuring, word wrapping;
 //! - [`colormap`]: matplotlib's viridis and magma;
 //! - [`ticks`]: round-number tick positions and labels;
-//! - [`axes::LinePlot`]: series on linear or log axes (with `scale.rs`
+//! - [`line_plot::LinePlot`]: series on linear or log axes (with `scale.rs`
 //!   mapping data to positions);
 //! - [`heatmap`]: a grid of numbers as colours, with a colour bar;
 //! - [`montage::montage`]: labelled images in a grid;
@@ -34,7 +34,6 @@
 //! Nathaniel J. Smith, Stéfan van der Walt and Eric Firing, dedicated to
 //! the public domain under CC0.
 
-pub mod axes;
 pub mod canvas;
 pub mod colormap;
 mod colormap_tables;
@@ -43,17 +42,18 @@ pub mod diff;
 mod font;
 pub mod heatmap;
 pub mod label_box;
+pub mod line_plot;
 pub mod montage;
 mod scale;
 pub mod text;
 pub mod ticks;
 
-pub use axes::{Corner, LinePlot, Series};
 pub use canvas::Canvas;
 pub use colormap::{Colormap, magma, viridis};
 pub use colour::Rgb;
 pub use diff::{changed_pixels, magnified_difference, max_change, with_change_scale};
 pub use heatmap::{ColourScale, HeatmapFigure, heatmap_figure, heatmap_image};
 pub use label_box::LabelBox;
+pub use line_plot::{Corner, LinePlot, Series};
 pub use montage::montage;
 pub use text::{Anchor, HAlign, VAlign};

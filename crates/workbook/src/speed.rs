@@ -105,7 +105,7 @@ pub(crate) fn settings_of<S: Step>(chapter: &Chapter<S>, size: Size) -> Result<S
 }
 
 /// A chapter's render as its program makes it.
-fn render_with<S: Step>(chapter: &Chapter<S>, settings: &Settings) -> Rendered {
+fn render_chapter<S: Step>(chapter: &Chapter<S>, settings: &Settings) -> Rendered {
     let (scene, camera) = (Scene::lab(), Camera::lab());
     (chapter.render)(
         &scene,
@@ -121,16 +121,16 @@ fn render_with<S: Step>(chapter: &Chapter<S>, settings: &Settings) -> Rendered {
 fn whitted_pair<S: Step>(chapter: &Chapter<S>, like: Like, size: Size) -> Result<Pair, CliError> {
     let seven = ch07_eight_rays::chapter(like);
     let settings = settings_of(chapter, size)?;
-    let rays = render_with(chapter, &settings).counts.total();
+    let rays = render_chapter(chapter, &settings).counts.total();
     assert_eq!(
         rays,
-        render_with(&seven, &settings).counts.total(),
+        render_chapter(&seven, &settings).counts.total(),
         "chapter 7 traces the same rays"
     );
     let (first_median, second_median) = interleave(
         ROUNDS,
-        || drop(render_with(chapter, &settings)),
-        || drop(render_with(&seven, &settings)),
+        || drop(render_chapter(chapter, &settings)),
+        || drop(render_chapter(&seven, &settings)),
     );
     Ok(Pair {
         what: settings.to_string(),

@@ -5,7 +5,7 @@
 use std::time::Instant;
 
 use ch09_many_spheres::field::field_scene;
-use ch09_many_spheres::{Bvh, Like, render_tree};
+use ch09_many_spheres::{Bvh, Like};
 use raylab::NoProgress;
 use raylab::frame::{Keep, Rendered};
 use raylab_cli::CliError;
@@ -54,6 +54,8 @@ pub fn list_size(size: Size, spheres: usize) -> Size {
 pub fn measure_speed(counts: &[usize], size: Size) -> Result<Vec<SpeedPoint>, CliError> {
     let settings = settings_of(&ch05_antialiasing::CHAPTER, size)?;
     let step = Like::AntiAliasing;
+    // Chapter 9's renderer: the tree built, then searched.
+    let through_tree = ch09_many_spheres::chapter(step).render;
     let keep = Keep {
         linear: false,
         maps: false,
@@ -68,11 +70,11 @@ pub fn measure_speed(counts: &[usize], size: Size) -> Result<Vec<SpeedPoint>, Cl
                 raylab::render(&scene, &camera, &step, &list_settings, keep, &NoProgress)
             });
             let tree =
-                fastest(|| render_tree(&scene, &camera, &step, &settings, keep, &NoProgress));
+                fastest(|| through_tree(&scene, &camera, &step, &settings, keep, &NoProgress));
             let same_size_tree = if small == size {
                 tree.srgb.clone()
             } else {
-                render_tree(&scene, &camera, &step, &list_settings, keep, &NoProgress).srgb
+                through_tree(&scene, &camera, &step, &list_settings, keep, &NoProgress).srgb
             };
             assert_eq!(
                 list.srgb, same_size_tree,

@@ -9,21 +9,8 @@ use image::RgbImage;
 use learn::limits::{HEIGHT, WIDTH};
 use learn::run::shown;
 
-use crate::compare::{Comparison, GAIN, signed_difference};
-use crate::picture::{Picture, size_flags};
-
-/// Write each `(name, image)` into `dir`, saying which could not be
-/// written; whether all were.
-pub(crate) fn save_images(images: &[(&str, RgbImage)], dir: &Path, out: &mut dyn Write) -> bool {
-    let mut saved = true;
-    for (name, image) in images {
-        if let Err(e) = raylab_cli::output::save_png(image, &dir.join(name)) {
-            let _ = writeln!(out, "      could not write {name}: {e}");
-            saved = false;
-        }
-    }
-    saved
-}
+use super::{Picture, size_flags};
+use crate::compare::{Comparison, GAIN, save_images, signed_difference};
 
 /// The mismatch, as `idiff` would put it, with the three images and the
 /// probe commands that show the worst pixel's ray trees.
