@@ -59,8 +59,13 @@ pub struct CommonFlags {
     #[arg(long, value_name = "FILE")]
     pub scene: Option<PathBuf>,
 
-    /// Folder to write into [default: out/<program name>] (set per chapter)
-    #[arg(long, value_name = "DIR")]
+    /// Folder to write into (its `--help` line is the `help` below, which
+    /// names the default as `out/<program name>`: the chapter sets it).
+    #[arg(
+        long,
+        value_name = "DIR",
+        help = "Folder to write into [default: out/<program name>] (set per chapter)"
+    )]
     pub out: Option<PathBuf>,
 
     /// Write only the render: no heat maps, ray tree or depth sweep (what --probe asks for is still written)

@@ -10,7 +10,7 @@ use raylab::scene::Scene;
 use raylab::trace::Step;
 
 /// How a program renders its whole image with its step: the core's
-/// [`raylab::render`], one ray at a time, unless the chapter brings a
+/// [`raylab::render()`], one ray at a time, unless the chapter brings a
 /// faster renderer of its own that makes the same bytes (chapter 7's
 /// waves). The probe and the depth sweep always trace one ray at a time.
 pub type Renderer<S> = fn(&Scene, &Camera, &S, &Settings, Keep, &dyn Progress) -> Rendered;
