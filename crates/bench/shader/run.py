@@ -331,6 +331,9 @@ def compare(rounds, spp, seed, only="abcdehfg"):
     path_rays = float(path.frame()[..., 3].astype("f8").sum())
     print(f"GL_RENDERER: {whitted.renderer}; cores: {os.cpu_count()}; "
           f"llvmpipe threads: {llvmpipe_threads()} (LP_NUM_THREADS {os.environ.get('LP_NUM_THREADS', 'unset')})")
+    # The machine's load before and after the rounds, printed with the
+    # table: other work on the machine slows both sides, and not equally.
+    load_before = os.getloadavg()[0]
     tmp = Path(tempfile.mkdtemp(prefix="raylab-shader-"))
     size = ["--width", str(WIDTH), "--height", str(HEIGHT)]
     variants = {
@@ -382,7 +385,8 @@ def compare(rounds, spp, seed, only="abcdehfg"):
     median = {k: statistics.median(v) * 1e3 for k, v in times.items()}
     paths = WIDTH * HEIGHT * spp
     print()
-    print(f"{WIDTH}x{HEIGHT}, {rounds} interleaved rounds, medians (2 cores, shared with other builds)")
+    print(f"{WIDTH}x{HEIGHT}, {rounds} interleaved rounds, medians ({os.cpu_count()} cores; "
+          f"load average {load_before:.1f} before, {os.getloadavg()[0]:.1f} after)")
     print()
     print("| | what | median ms | processor ms | rays | Mrays/s | M paths/s | program's own render ms |")
     print("|---|---|---:|---:|---:|---:|---:|---:|")
