@@ -46,14 +46,6 @@ pub struct PhotonColumns {
     pub bounces: Vec<f32>,
 }
 
-/// Photons `i .. i + 8` of `column` (one of [`PhotonColumns`]'s).
-#[inline]
-pub fn eight(column: &[f32], i: usize) -> [f32; 8] {
-    column[i..i + 8]
-        .try_into()
-        .expect("the columns are padded to a multiple of eight")
-}
-
 /// What a lookup at a ground point reads ([`CausticMap::near`]).
 pub struct Near<'m> {
     /// The point in the ground's own axes.
@@ -172,27 +164,21 @@ impl CausticMap {
         // A bright caustic holds thousands of photons in a few cells, and
         // every path that lands near it reads them all. They are added as
         // eight partial sums (the k-th photon of each group of eight adds
-        // to sum k) and the eight are added pairwise at the end, as the
-        // eight lanes of an AVX register add them. Floating-point addition
-        // is not associative: the order is the one the caustic images were
-        // made with, so it is part of them. Written this way (each group
-        // read as eight-number arrays, the three conditions joined with `&`,
-        // which evaluates all three, not `&&`, which branches) the compiler
-        // keeps the eight sums in one register and tests several photons
-        // at once.
+        // to sum k) and the eight are added pairwise at the end.
+        // Floating-point addition is not associative: this order is the
+        // one the caustic images were made with, so it is part of them.
         let most = max_bounces as f32;
         let mut sums = [0.0f32; 8];
         let photons = &self.photons;
         for run in near.runs {
             for i in run.clone().step_by(8) {
-                let (pu, pv) = (eight(&photons.u, i), eight(&photons.v, i));
-                let (bounces, power) = (eight(&photons.bounces, i), eight(&photons.power, i));
-                // Past the run's end are the next cells' photons: not these.
-                let in_run = (run.end - i).min(8) as u32;
+                let (pu, pv) = (&photons.u[i..i + 8], &photons.v[i..i + 8]);
+                let (bounces, power) = (&photons.bounces[i..i + 8], &photons.power[i..i + 8]);
                 for (k, sum) in sums.iter_mut().enumerate() {
                     let (du, dv) = (pu[k] - u, pv[k] - v);
                     let d2 = du * du + dv * dv;
-                    let counts = (d2 < h * h) & (bounces[k] <= most) & ((k as u32) < in_run);
+                    // Past the run's end are the next cells' photons: not these.
+                    let counts = d2 < h * h && bounces[k] <= most && i + k < run.end;
                     let kernel = 1.0 - d2 / (h * h);
                     *sum += if counts { power[k] * kernel } else { 0.0 };
                 }

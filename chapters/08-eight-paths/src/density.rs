@@ -2,12 +2,13 @@
 //! at a time in the lanes of an `f32x8`: the same partial sums in the same
 //! order, so the same bits.
 //!
-//! Chapter 6 writes the sum over eight partial sums so that the compiler
-//! may keep them in one register; it does, but in two halves of four. A
-//! path that lands in the glass ball's caustic reads thousands of photons,
-//! so here the eight are one `f32x8` by construction.
+//! Chapter 6 adds a run's photons one at a time, the k-th of each group of
+//! eight into partial sum k. Here the eight partial sums are the eight
+//! lanes, and each group of eight photons is one step. A path that lands
+//! in the glass ball's caustic reads thousands of photons, so this is
+//! where `--caustics` spends its time.
 
-use ch06_path_tracing::caustics::{CausticMap, KERNEL_RADIUS, eight};
+use ch06_path_tracing::caustics::{CausticMap, KERNEL_RADIUS};
 use raylab::Vec3;
 use wide::{CmpLe, CmpLt, f32x8};
 
@@ -30,7 +31,7 @@ pub fn irradiance_x8(map: &CausticMap, p: Vec3, max_bounces: u32) -> Vec3 {
     let mut sum = f32x8::ZERO;
     for run in near.runs {
         for i in run.clone().step_by(8) {
-            let column = |c: &[f32]| f32x8::new(eight(c, i));
+            let column = |c: &[f32]| f32x8::from(&c[i..i + 8]);
             let (du, dv) = (column(&photons.u) - u, column(&photons.v) - v);
             let d2 = du * du + dv * dv;
             // Lanes past the run's end are the next cells' photons.

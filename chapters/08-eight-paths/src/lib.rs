@@ -9,8 +9,8 @@
 //! throughputs and the terms. Only what is rare, or the learner's, is done
 //! lane by lane: the choice of lobe where a material has one (the
 //! learner's `choose_lobe`), the disc sun's sample (`--sun-size`) and the
-//! caustic lookup (`--caustics`, which scans its photons eight at a time
-//! instead).
+//! caustic lookup (`--caustics`), which reads each lane's photons eight at
+//! a time ([`density`]).
 //!
 //! The bytes are the scalar tracer's because each lane does the scalar
 //! code's operations in its order (the workspace builds without FMA), and
